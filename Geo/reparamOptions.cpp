@@ -1,0 +1,41 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include "GmshMessage.h"
+#include "Options.h"
+#include "reparamOptions.h"
+
+reparamOptions &getReparamOptions()
+{
+  static reparamOptions options;
+  return options;
+}
+
+const char *compoundParametrizationName(int value)
+{
+  switch(value) {
+  case 0: return "Gmsh built-in mean value";
+  case 1: return "finite element harmonic";
+  case 2: return "barycentric (Tutte)";
+  case 3: return "mean value";
+  case 4: return "finite element conformal (LSCM)";
+  case 5: return "spectral conformal";
+  case 6: return "automatic";
+  }
+  return "unknown";
+}
+
+double opt_mesh_compound_parametrization(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) {
+    int value = (int)val;
+    if(value != val || value < 0 || value > 6)
+      Msg::Error("Mesh.CompoundParametrization must be an integer from 0 to "
+                 "6 (got %g): keeping %d (%s)",
+                 val, o.parametrization,
+                 compoundParametrizationName(o.parametrization));
+    else
+      o.parametrization = value;
+  }
+  return o.parametrization;
+}

@@ -1,0 +1,30 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Reparam's options (Mesh.Compound*). Their values live here rather than in
+// Gmsh's CTX, so that Gmsh's Common/Context.h stays untouched; the option
+// table entries (Common/DefaultOptions.h, patches/) call the accessors below.
+
+#ifndef REPARAM_OPTIONS_H
+#define REPARAM_OPTIONS_H
+
+// Values of Mesh.CompoundParametrization
+enum class compoundParametrization {
+  gmsh = 0, // Gmsh's own code (the reference)
+  harmonic = 1,
+  barycentric = 2,
+  meanValue = 3,
+  conformal = 4,
+  spectral = 5,
+  automatic = 6
+};
+
+struct reparamOptions {
+  int parametrization = (int)compoundParametrization::meanValue;
+};
+
+reparamOptions &getReparamOptions();
+
+// "mean value", "spectral conformal"...; "unknown" outside 0..6
+const char *compoundParametrizationName(int value);
+
+#endif

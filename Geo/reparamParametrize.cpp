@@ -1,0 +1,97 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The hook Gmsh's computeParametrization() calls first (patches/0001): turns
+// Gmsh's triangles into a patch, runs the chosen map and hands (u, v) back in
+// Gmsh's layout. Used by discrete faces' CreateGeometry, by Compound Surface
+// meshing and by the patch checks of ClassifySurfaces.
+
+#include <map>
+#include "GModel.h"
+#include "MLine.h"
+#include "MTriangle.h"
+// after its prerequisites (it includes none)
+#include "GModelParametrize.h"
+#include "GmshMessage.h"
+#include "MTriangle.h"
+#include "OS.h"
+#include "discretePatch.h"
+#include "meanValueMap.h"
+#include "reparamOptions.h"
+
+int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
+                                  std::vector<MVertex *> &nodes,
+                                  std::vector<SPoint2> &stl_vertices_uv,
+                                  std::vector<SPoint3> &stl_vertices_xyz,
+                                  std::vector<int> &stl_triangles)
+{
+  const int choice = getReparamOptions().parametrization;
+  if(choice == (int)compoundParametrization::gmsh) return 0;
+
+  stl_vertices_uv.clear();
+  stl_vertices_xyz.clear();
+  stl_triangles.clear();
+  nodes.clear();
+  if(triangles.empty()) return -1;
+
+  double t0 = TimeOfDay();
+  // Nodes numbered in order of first appearance, as Gmsh's own code does, so
+  // that both give the same node order
+  std::map<MVertex *, int> nodeIndex;
+  std::vector<SPoint3> points;
+  std::vector<std::array<int, 3> > tris(triangles.size());
+  for(std::size_t t = 0; t < triangles.size(); t++) {
+    for(int j = 0; j < 3; j++) {
+      MVertex *v = triangles[t]->getVertex(j);
+      auto it = nodeIndex.insert(std::make_pair(v, (int)nodes.size()));
+      if(it.second) {
+        nodes.push_back(v);
+        points.push_back(v->point());
+      }
+      tris[t][j] = it.first->second;
+    }
+  }
+  stl_triangles.resize(3 * tris.size());
+  for(std::size_t t = 0; t < tris.size(); t++)
+    for(int j = 0; j < 3; j++) stl_triangles[3 * t + j] = tris[t][j];
+  stl_vertices_xyz = points;
+
+  discretePatch patch;
+  reparamError err = makeDiscretePatch(points, tris, patch);
+  double t1 = TimeOfDay();
+  if(!err.ok()) {
+    Msg::Error("Cannot parametrize triangulation (%lu triangles): %s",
+               triangles.size(), err.what().c_str());
+    return -1;
+  }
+  if(patch.numReorientedTriangles)
+    Msg::Warning("Triangulation (%lu triangles) is not consistently oriented: "
+                 "%lu triangles taken reversed for the parametrization",
+                 triangles.size(), patch.numReorientedTriangles);
+
+  patchMap map;
+  switch((compoundParametrization)choice) {
+  case compoundParametrization::meanValue: map = meanValueMap(patch); break;
+  default:
+    Msg::Error("Mesh.CompoundParametrization = %d (%s) is not implemented "
+               "yet: use 0 (Gmsh) or 3 (mean value)",
+               choice, compoundParametrizationName(choice));
+    return -1;
+  }
+  if(!map.error.ok()) {
+    Msg::Error("%s map of triangulation (%lu triangles) failed: %s",
+               compoundParametrizationName(choice), triangles.size(),
+               map.error.what().c_str());
+    return -1;
+  }
+
+  stl_vertices_uv.resize(nodes.size());
+  for(std::size_t i = 0; i < nodes.size(); i++)
+    stl_vertices_uv[i] = SPoint2(map.uv[2 * i], map.uv[2 * i + 1]);
+  Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s: "
+            "patch %.3g s, assemble %.3g s, solve %.3g s",
+            compoundParametrizationName(choice), nodes.size(),
+            triangles.size(), patch.boundaryLoops.size() - 1,
+            patch.boundaryLoops.size() == 2 ? "" : "s", t1 - t0,
+            map.assembleTime, map.solveTime);
+  return 1;
+}

@@ -1,0 +1,43 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Every stage (patch building, maps, checks) returns a status, so that the
+// caller and the fallback chain decide, and the log says exactly why.
+
+#ifndef REPARAM_STATUS_H
+#define REPARAM_STATUS_H
+
+#include <string>
+
+enum class reparamStatus {
+  ok,
+  emptyPatch,
+  invalidCoordinates, // NaN or infinite node coordinates
+  degenerateTriangle, // zero area or repeated node
+  nonManifoldEdge, // an edge shared by more than two triangles
+  nonManifoldVertex, // a node where several boundary fans meet
+  nonOrientable,
+  severalComponents,
+  noBoundary, // closed surface: must be split first
+  notDiskTopology, // genus > 0: must be split first
+  solverFailed,
+  notImplemented,
+};
+
+// One sentence per status, for messages
+const char *reparamStatusMessage(reparamStatus status);
+
+struct reparamError {
+  reparamStatus status = reparamStatus::ok;
+  std::string detail; // which triangle, node or value
+  bool ok() const { return status == reparamStatus::ok; }
+  // "<status message> (<detail>)"
+  std::string what() const;
+};
+
+inline reparamError reparamFailure(reparamStatus status,
+                                   const std::string &detail = "")
+{
+  return reparamError{status, detail};
+}
+
+#endif

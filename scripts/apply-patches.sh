@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Applies patches/*.patch to a Gmsh source tree, idempotently.
+#   scripts/apply-patches.sh GMSH_SOURCE_DIR PATCH_DIR
+# The series last applied is kept in GMSH_SOURCE_DIR/.reparam-applied; when
+# patches/ changes, that series is reverted first, then the new one applied,
+# so only the files the patches touch change (and need recompiling).
+set -euo pipefail
+src=$1
+dir=$2
+stamp=$src/.reparam-applied
+new=$(mktemp)
+trap 'rm -f "$new"' EXIT
+cat /dev/null "$dir"/*.patch > "$new" 2>/dev/null || true
+
+if [ -f "$stamp" ] && cmp -s "$stamp" "$new"; then
+  exit 0
+fi
+if [ -f "$stamp" ] && [ -s "$stamp" ]; then
+  echo "-- Reverting the previous Reparam patch series in $src"
+  patch -d "$src" -p1 -R -s -N --no-backup-if-mismatch < "$stamp"
+fi
+rm -f "$stamp"
+for p in "$dir"/*.patch; do
+  [ -e "$p" ] || continue
+  echo "-- Applying $(basename "$p")"
+  patch -d "$src" -p1 -s -N --no-backup-if-mismatch < "$p"
+done
+cp "$new" "$stamp"

@@ -1,0 +1,82 @@
+// Reparam - helpers for tests that run inside Gmsh (through its API)
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+#include "GModel.h"
+#include "MLine.h"
+#include "MTriangle.h"
+// after its prerequisites (it includes none)
+#include "GModelParametrize.h"
+#include "MTriangle.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
+
+namespace {
+
+  class gmshEnvironment : public ::testing::Environment {
+  public:
+    void SetUp() override
+    {
+      gmsh::initialize(0, nullptr, false);
+      gmsh::option::setNumber("General.Terminal", 0);
+      // keep going after errors, like the gmsh executable: the tests provoke
+      // some and read them from the log
+      gmsh::option::setNumber("General.AbortOnError", 0);
+    }
+    void TearDown() override { gmsh::finalize(); }
+  };
+
+  ::testing::Environment *const environment =
+    ::testing::AddGlobalTestEnvironment(new gmshEnvironment);
+
+} // namespace
+
+gmshTriangulation::gmshTriangulation(const testTriangulation &t)
+{
+  for(const auto &p : t.points)
+    vertices.push_back(new MVertex(p.x(), p.y(), p.z()));
+  for(const auto &tri : t.triangles)
+    triangles.push_back(new MTriangle(vertices[tri[0]], vertices[tri[1]],
+                                      vertices[tri[2]]));
+}
+
+gmshTriangulation::~gmshTriangulation()
+{
+  for(auto t : triangles) delete t;
+  for(auto v : vertices) delete v;
+}
+
+gmshParametrization parametrizeWith(const std::vector<MTriangle *> &t,
+                                    int choice)
+{
+  gmsh::option::setNumber("Mesh.CompoundParametrization", choice);
+  gmshParametrization p;
+  std::vector<SPoint3> xyz;
+  p.ok = computeParametrization(t, p.nodes, p.uv, xyz, p.triangles);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  return p;
+}
+
+double distanceUpToOrthogonal(const std::vector<SPoint2> &a,
+                              const std::vector<SPoint2> &b)
+{
+  Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+  for(std::size_t i = 0; i < a.size(); i++)
+    M += Eigen::Vector2d(b[i].x(), b[i].y()) *
+         Eigen::Vector2d(a[i].x(), a[i].y()).transpose();
+  Eigen::JacobiSVD<Eigen::Matrix2d> svd(M, Eigen::ComputeFullU |
+                                             Eigen::ComputeFullV);
+  Eigen::Matrix2d Q = svd.matrixU() * svd.matrixV().transpose();
+  double worst = 0.;
+  for(std::size_t i = 0; i < a.size(); i++) {
+    Eigen::Vector2d d = Q * Eigen::Vector2d(a[i].x(), a[i].y()) -
+                        Eigen::Vector2d(b[i].x(), b[i].y());
+    worst = std::max(worst, d.norm());
+  }
+  return worst;
+}
+
+std::string tutorialFile(const std::string &name)
+{
+  return std::string(REPARAM_SOURCE_DIR) + "/tutorials/" + name;
+}

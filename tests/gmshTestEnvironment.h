@@ -1,0 +1,40 @@
+// Reparam - helpers for tests that run inside Gmsh (through its API)
+
+#ifndef GMSH_TEST_ENVIRONMENT_H
+#define GMSH_TEST_ENVIRONMENT_H
+
+#include <string>
+#include <vector>
+#include "SPoint2.h"
+#include "testPatches.h"
+
+class MTriangle;
+class MVertex;
+
+// Gmsh's own triangles for a test triangulation (owned by the object)
+struct gmshTriangulation {
+  std::vector<MVertex *> vertices;
+  std::vector<MTriangle *> triangles;
+  explicit gmshTriangulation(const testTriangulation &t);
+  ~gmshTriangulation();
+};
+
+// computeParametrization() with Mesh.CompoundParametrization = choice
+struct gmshParametrization {
+  bool ok = false;
+  std::vector<MVertex *> nodes;
+  std::vector<SPoint2> uv;
+  std::vector<int> triangles;
+};
+gmshParametrization parametrizeWith(const std::vector<MTriangle *> &t,
+                                    int choice);
+
+// Largest |Q a_i - b_i| over the orthogonal Q (rotation or reflection) that
+// best maps a onto b: the two maps differ only by the start and direction of
+// the boundary on the circle
+double distanceUpToOrthogonal(const std::vector<SPoint2> &a,
+                              const std::vector<SPoint2> &b);
+
+std::string tutorialFile(const std::string &name);
+
+#endif

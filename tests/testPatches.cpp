@@ -1,0 +1,138 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include "testPatches.h"
+#include "triangleQuality.h"
+
+testTriangulation polarDiskWithHoles(int rings, int sectors,
+                                     const std::vector<std::array<int, 4> > &holes)
+{
+  testTriangulation t;
+  t.points.push_back(SPoint3(0., 0., 0.));
+  for(int i = 1; i <= rings; i++) {
+    for(int j = 0; j < sectors; j++) {
+      double r = (double)i / rings;
+      double a = 2. * M_PI * j / sectors;
+      t.points.push_back(SPoint3(r * std::cos(a), r * std::sin(a), 0.));
+    }
+  }
+  auto id = [&](int i, int j) {
+    return i == 0 ? 0 : 1 + (i - 1) * sectors + ((j % sectors) + sectors) % sectors;
+  };
+  auto inHole = [&](int i, int j) {
+    for(const auto &h : holes)
+      if(i >= h[0] && i < h[1] && j >= h[2] && j < h[3]) return true;
+    return false;
+  };
+  for(int j = 0; j < sectors; j++) t.triangles.push_back({id(0, 0), id(1, j), id(1, j + 1)});
+  for(int i = 1; i < rings; i++) {
+    for(int j = 0; j < sectors; j++) {
+      if(inHole(i, j)) continue;
+      int a = id(i, j), b = id(i, j + 1), c = id(i + 1, j), d = id(i + 1, j + 1);
+      if((i + j) % 2) {
+        t.triangles.push_back({a, c, d});
+        t.triangles.push_back({a, d, b});
+      }
+      else {
+        t.triangles.push_back({a, c, b});
+        t.triangles.push_back({b, c, d});
+      }
+    }
+  }
+  // drop the nodes inside the holes
+  std::vector<int> newIndex(t.points.size(), -1);
+  for(const auto &tri : t.triangles)
+    for(int v : tri) newIndex[v] = 0;
+  std::vector<SPoint3> kept;
+  for(std::size_t i = 0; i < t.points.size(); i++) {
+    if(newIndex[i] < 0) continue;
+    newIndex[i] = (int)kept.size();
+    kept.push_back(t.points[i]);
+  }
+  for(auto &tri : t.triangles)
+    for(int &v : tri) v = newIndex[v];
+  t.points = kept;
+  return t;
+}
+
+testTriangulation polarDisk(int rings, int sectors, double radialExponent,
+                            double twist)
+{
+  testTriangulation t = polarDiskWithHoles(rings, sectors, {});
+  for(int i = 1; i <= rings; i++) {
+    for(int j = 0; j < sectors; j++) {
+      double r = std::pow((double)i / rings, radialExponent);
+      double a = 2. * M_PI * (j + twist * i) / sectors;
+      t.points[1 + (i - 1) * sectors + j] =
+        SPoint3(r * std::cos(a), r * std::sin(a), 0.);
+    }
+  }
+  return t;
+}
+
+testTriangulation hemisphere(int rings, int sectors)
+{
+  testTriangulation t = polarDisk(rings, sectors);
+  for(auto &p : t.points) {
+    // angle from the pole proportional to the planar radius: well-shaped
+    double theta = 0.5 * M_PI * std::sqrt(p.x() * p.x() + p.y() * p.y());
+    double a = std::atan2(p.y(), p.x());
+    p = SPoint3(std::sin(theta) * std::cos(a), std::sin(theta) * std::sin(a),
+                std::cos(theta));
+  }
+  return t;
+}
+
+testTriangulation sliverGrid(int n, double gap)
+{
+  testTriangulation t;
+  const double h = 1. / n;
+  for(int i = 0; i <= n; i++) {
+    for(int j = 0; j <= n; j++) {
+      double x = j * h;
+      if(j == n / 2) x = (j - 1) * h + gap * h; // squeeze this column
+      t.points.push_back(SPoint3(x, i * h, 0.));
+    }
+  }
+  auto id = [&](int i, int j) { return i * (n + 1) + j; };
+  for(int i = 0; i < n; i++) {
+    for(int j = 0; j < n; j++) {
+      t.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+      t.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+    }
+  }
+  return t;
+}
+
+testTriangulation liftPlanar(testTriangulation t, double amplitude)
+{
+  for(auto &p : t.points)
+    p = SPoint3(p.x(), p.y(),
+                amplitude * std::sin(2. * p.x()) * std::cos(3. * p.y()));
+  return t;
+}
+
+discretePatch makePatchOrDie(const testTriangulation &t)
+{
+  discretePatch patch;
+  reparamError err = makeDiscretePatch(t.points, t.triangles, patch);
+  if(!err.ok()) throw std::runtime_error(err.what());
+  return patch;
+}
+
+double uvArea2(const std::vector<double> &uv, const std::array<int, 3> &t)
+{
+  return signedArea2(uv[2 * t[0]], uv[2 * t[0] + 1], uv[2 * t[1]],
+                     uv[2 * t[1] + 1], uv[2 * t[2]], uv[2 * t[2] + 1]);
+}
+
+double minKappa(const testTriangulation &t)
+{
+  double k = 1.;
+  for(const auto &tri : t.triangles)
+    k = std::min(k, triangleKappa(t.points[tri[0]], t.points[tri[1]],
+                                  t.points[tri[2]]));
+  return k;
+}

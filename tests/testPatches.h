@@ -1,0 +1,47 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Synthetic patches for the tests: known geometry, so that tests can assert
+// exact numbers without any data file.
+
+#ifndef TEST_PATCHES_H
+#define TEST_PATCHES_H
+
+#include <array>
+#include <vector>
+#include "SPoint3.h"
+#include "discretePatch.h"
+
+struct testTriangulation {
+  std::vector<SPoint3> points;
+  std::vector<std::array<int, 3> > triangles;
+};
+
+// Polar grid of the unit disk: `rings` rings of `sectors` nodes around a
+// centre node, ring radius (i / rings)^radialExponent, ring i twisted by
+// twist * i sectors. Outer boundary: a regular polygon. Counterclockwise.
+testTriangulation polarDisk(int rings, int sectors, double radialExponent = 1.,
+                            double twist = 0.);
+
+// polarDisk lifted onto the unit sphere's upper half (z = sqrt(1 - r^2))
+testTriangulation hemisphere(int rings, int sectors);
+
+// polarDisk with the cells of some (ring, sector) index ranges removed
+testTriangulation polarDiskWithHoles(int rings, int sectors,
+                                     const std::vector<std::array<int, 4> > &holes);
+
+// A square grid of n x n cells over [0,1]^2 whose middle column of nodes is
+// pushed to within `gap` of its left neighbours: slivers with kappa ~ gap
+testTriangulation sliverGrid(int n, double gap);
+
+// Apply z = f(x, y) to every node
+testTriangulation liftPlanar(testTriangulation t, double amplitude);
+
+discretePatch makePatchOrDie(const testTriangulation &t);
+
+// Twice the signed area of triangle t in the uv plane (uv: 2 values per node)
+double uvArea2(const std::vector<double> &uv, const std::array<int, 3> &t);
+
+// Smallest kappa of the 3D triangles
+double minKappa(const testTriangulation &t);
+
+#endif

@@ -1,0 +1,38 @@
+// Reparam tutorial 1: remeshing a poor STL triangulation
+//
+// dome.stl is a bumpy dome with two holes, triangulated with long slivers
+// (kappa min < 0.1), like a raw segmentation. We classify it into discrete
+// surfaces, parametrize each one and remesh it with Gmsh's planar mesher in
+// the parametric plane:
+//
+//   gmsh t1_remesh_stl.geo -2                  (mean value map, the default)
+//   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 0   (Gmsh's own)
+//
+// The log has one "Reparam:" line per parametrization (stage times) and one
+// per meshed surface (triangles, kappa min and mean).
+
+DefineConstant[
+  Parametrization = {3, Choices{0 = "Gmsh built-in", 1 = "FE harmonic",
+                                2 = "Barycentric", 3 = "Mean value",
+                                4 = "FE conformal", 5 = "Spectral conformal",
+                                6 = "Automatic"},
+                     Name "Reparam/Parametrization"}
+  Size = {0.05, Min 0.005, Max 0.5, Step 0.005,
+              Name "Reparam/Mesh size"}
+];
+
+Merge "dome.stl";
+
+// Mesh.CompoundParametrization must be set before CreateGeometry, which
+// computes the parametrizations
+Mesh.CompoundParametrization = Parametrization;
+
+// Split the triangulation where the angle between triangles exceeds 40
+// degrees, keep the boundary, and make every patch parametrizable (1)
+ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};
+CreateGeometry;
+
+Mesh.MeshSizeMin = Size;
+Mesh.MeshSizeMax = Size;
+Mesh.Algorithm = 6; // Frontal-Delaunay in the parametric plane
+
