@@ -13,11 +13,8 @@ namespace {
   struct triangleSide {
     int lo, hi; // node indices, lo < hi
     int triangle;
+    int side; // nodes side and side + 1 (mod 3) of the triangle
     bool forward; // the triangle runs lo -> hi
-    bool operator<(const triangleSide &o) const
-    {
-      return lo < o.lo || (lo == o.lo && hi < o.hi);
-    }
   };
 
   std::string triangleName(int t) { return "triangle " + std::to_string(t); }
@@ -28,6 +25,15 @@ namespace {
                           std::vector<std::array<int, 3> > &triangles,
                           std::size_t &flipped)
   {
+    flipped = 0;
+    bool consistent = true; // the common case: nothing to do
+    for(std::size_t i = 0; i + 1 < sides.size() && consistent; i++) {
+      if(sides[i].lo == sides[i + 1].lo && sides[i].hi == sides[i + 1].hi &&
+         sides[i].forward == sides[i + 1].forward)
+        consistent = false;
+    }
+    if(consistent) return true;
+
     const std::size_t nt = triangles.size();
     std::vector<std::vector<std::pair<int, bool> > > neighbours(nt);
     for(std::size_t i = 0; i + 1 < sides.size(); i++) {
@@ -40,7 +46,6 @@ namespace {
     }
     std::vector<int> flip(nt, -1);
     std::vector<int> stack;
-    flipped = 0;
     for(std::size_t seed = 0; seed < nt; seed++) {
       if(flip[seed] >= 0) continue;
       flip[seed] = 0;
@@ -68,18 +73,35 @@ namespace {
     return true;
   }
 
+  // The sides of all triangles, sorted by (lo, hi), so that the sides of an
+  // edge are consecutive: a bucket per low node (few sides each), in linear
+  // time rather than a global sort
   std::vector<triangleSide>
-  sortedSides(const std::vector<std::array<int, 3> > &triangles)
+  sortedSides(const std::vector<std::array<int, 3> > &triangles, int nv)
   {
-    std::vector<triangleSide> sides;
-    sides.reserve(3 * triangles.size());
+    std::vector<int> start(nv + 1, 0);
+    for(const auto &tri : triangles)
+      for(int j = 0; j < 3; j++)
+        start[std::min(tri[j], tri[(j + 1) % 3]) + 1]++;
+    for(int v = 0; v < nv; v++) start[v + 1] += start[v];
+    std::vector<triangleSide> sides(3 * triangles.size());
+    std::vector<int> fill(start.begin(), start.end() - 1);
     for(std::size_t t = 0; t < triangles.size(); t++) {
       for(int j = 0; j < 3; j++) {
         int a = triangles[t][j], b = triangles[t][(j + 1) % 3];
-        sides.push_back({std::min(a, b), std::max(a, b), (int)t, a < b});
+        sides[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b),
+                                         (int)t, j, a < b};
       }
     }
-    std::sort(sides.begin(), sides.end());
+    for(int v = 0; v < nv; v++) {
+      for(int i = start[v] + 1; i < start[v + 1]; i++) {
+        triangleSide s = sides[i];
+        int k = i;
+        for(; k > start[v] && sides[k - 1].hi > s.hi; k--)
+          sides[k] = sides[k - 1];
+        sides[k] = s;
+      }
+    }
     return sides;
   }
 
@@ -123,8 +145,7 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
                             triangleName(t) + " has zero area");
   }
 
-  std::vector<triangleSide> sides = sortedSides(triangles);
-  std::size_t edges = 0;
+  std::vector<triangleSide> sides = sortedSides(triangles, nv);
   for(std::size_t i = 0; i < sides.size();) {
     std::size_t j = i;
     while(j < sides.size() && sides[j].lo == sides[i].lo &&
@@ -135,14 +156,13 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
                             "edge " + std::to_string(sides[i].lo) + "-" +
                               std::to_string(sides[i].hi) + " has " +
                               std::to_string(j - i) + " triangles");
-    edges++;
     i = j;
   }
 
   std::size_t flipped = 0;
   if(!orientConsistently(sides, triangles, flipped))
     return reparamFailure(reparamStatus::nonOrientable);
-  if(flipped) sides = sortedSides(triangles);
+  if(flipped) sides = sortedSides(triangles, nv);
 
   // Connected components, through shared edges
   std::vector<int> parent(triangles.size());
@@ -185,9 +205,16 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
   for(const auto &tri : triangles)
     for(int j = 0; j < 3; j++) referenced[tri[j]] = 1;
 
+  patch.triangleEdges.resize(triangles.size());
+  for(std::size_t i = 0; i < sides.size(); i++) {
+    if(i == 0 || sides[i].lo != sides[i - 1].lo ||
+       sides[i].hi != sides[i - 1].hi)
+      patch.edges.push_back({sides[i].lo, sides[i].hi});
+    patch.triangleEdges[sides[i].triangle][sides[i].side] =
+      (int)patch.edges.size() - 1;
+  }
   patch.points = std::move(points);
   patch.triangles = std::move(triangles);
-  patch.numEdges = edges;
   patch.numReorientedTriangles = flipped;
   for(int start = 0; start < nv; start++) {
     if(next[start] < 0 || used[start]) continue;

@@ -17,7 +17,10 @@ struct discretePatch {
   // Node indices, all oriented alike (makeDiscretePatch reorients the ones
   // that disagree with the first triangle)
   std::vector<std::array<int, 3> > triangles;
-  std::size_t numEdges = 0;
+  // Unique edges (lo, hi), lo < hi, sorted
+  std::vector<std::array<int, 2> > edges;
+  // triangleEdges[t][k]: the edge of nodes k and k + 1 (mod 3) of triangle t
+  std::vector<std::array<int, 3> > triangleEdges;
   std::size_t numReorientedTriangles = 0;
   // Cycles of node indices (first != last) with the patch on the left of
   // every edge, i.e. counterclockwise around the patch for its orientation
@@ -27,7 +30,7 @@ struct discretePatch {
 
   int eulerCharacteristic() const
   {
-    return (int)points.size() - (int)numEdges + (int)triangles.size();
+    return (int)points.size() - (int)edges.size() + (int)triangles.size();
   }
   // Of a connected patch with boundaryLoops.size() boundaries
   int genus() const

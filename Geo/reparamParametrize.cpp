@@ -5,7 +5,7 @@
 // Gmsh's layout. Used by discrete faces' CreateGeometry, by Compound Surface
 // meshing and by the patch checks of ClassifySurfaces.
 
-#include <map>
+#include <unordered_map>
 #include "GModel.h"
 #include "MLine.h"
 #include "MTriangle.h"
@@ -36,7 +36,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   double t0 = TimeOfDay();
   // Nodes numbered in order of first appearance, as Gmsh's own code does, so
   // that both give the same node order
-  std::map<MVertex *, int> nodeIndex;
+  std::unordered_map<MVertex *, int> nodeIndex;
+  nodeIndex.reserve(triangles.size());
   std::vector<SPoint3> points;
   std::vector<std::array<int, 3> > tris(triangles.size());
   for(std::size_t t = 0; t < triangles.size(); t++) {

@@ -12,7 +12,7 @@
 
 enum class sparseFactorization {
   cholesky, // symmetric positive definite: SimplicialLDLT
-  lu // general: SparseLU
+  lu // general: KLU
 };
 
 // uv holds 2 values per node; on input those of the fixed nodes are set,

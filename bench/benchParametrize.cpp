@@ -35,7 +35,10 @@ int main(int argc, char **argv)
   if(maps.empty()) maps = {3, 0};
 
   gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
+  // errors on stderr, and keep going after them like the gmsh executable
+  gmsh::option::setNumber("General.Terminal", 1);
+  gmsh::option::setNumber("General.Verbosity", 1);
+  gmsh::option::setNumber("General.AbortOnError", 0);
   gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
   gmsh::merge(argv[1]);
   std::vector<std::size_t> tags, nodes;

@@ -15,7 +15,7 @@ mkdir -p "$cache"
 
 packages=(build-essential cmake ccache pkg-config dpkg-dev
   libeigen3-dev libmetis-dev libgmm++-dev libann-dev
-  libspectra-dev libarpack2-dev libgtest-dev
+  libspectra-dev libarpack2-dev libgtest-dev libsuitesparse-dev
   zlib1g-dev libpng-dev libjpeg-dev python3
   # Debian's gmsh source links these even without the GUI (its patch
   # 30_delete_gl2ps_from_source)
