@@ -51,17 +51,20 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
       tris[t][j] = it.first->second;
     }
   }
-  stl_triangles.resize(3 * tris.size());
+  // Gmsh's callers read the outputs whatever the result (the patch check of
+  // ClassifySurfaces indexes the (u, v) by the triangles): they stay empty
+  // unless the map succeeds
+  std::vector<int> triangleNodes(3 * tris.size());
   for(std::size_t t = 0; t < tris.size(); t++)
-    for(int j = 0; j < 3; j++) stl_triangles[3 * t + j] = tris[t][j];
-  stl_vertices_xyz = points;
+    for(int j = 0; j < 3; j++) triangleNodes[3 * t + j] = tris[t][j];
 
   discretePatch patch;
-  reparamError err = makeDiscretePatch(points, tris, patch);
+  reparamError err = makeDiscretePatch(std::move(points), std::move(tris), patch);
   double t1 = TimeOfDay();
   if(!err.ok()) {
     Msg::Error("Cannot parametrize triangulation (%lu triangles): %s",
                triangles.size(), err.what().c_str());
+    nodes.clear();
     return -1;
   }
   if(patch.numReorientedTriangles)
@@ -76,15 +79,19 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     Msg::Error("Mesh.CompoundParametrization = %d (%s) is not implemented "
                "yet: use 0 (Gmsh) or 3 (mean value)",
                choice, compoundParametrizationName(choice));
+    nodes.clear();
     return -1;
   }
   if(!map.error.ok()) {
     Msg::Error("%s map of triangulation (%lu triangles) failed: %s",
                compoundParametrizationName(choice), triangles.size(),
                map.error.what().c_str());
+    nodes.clear();
     return -1;
   }
 
+  stl_triangles = std::move(triangleNodes);
+  stl_vertices_xyz = patch.points;
   stl_vertices_uv.resize(nodes.size());
   for(std::size_t i = 0; i < nodes.size(); i++)
     stl_vertices_uv[i] = SPoint2(map.uv[2 * i], map.uv[2 * i + 1]);

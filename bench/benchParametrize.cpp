@@ -5,10 +5,12 @@
 //
 // Classifies the STL like the STL recipe (ClassifySurfaces{40 deg, 1, 1,
 // 180 deg}), then times computeParametrization() on every patch with each
-// map (default: 3 then 0; stock last, since it can take minutes). Prints one
-// "patches ..." line, then one "map M seconds S ok K" line per map, flushed
-// as soon as known, so that a caller's timeout still gets the fast results.
+// map (default: 3 then 0; stock last, since it can take minutes), the best of
+// 3 runs (1 when a run takes over 10 s). Prints one "triangles ..." line,
+// then one "map M seconds S ok K" line per map, flushed as soon as known, so
+// that a caller's timeout still gets the fast results.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -72,18 +74,23 @@ int main(int argc, char **argv)
 
   for(int map : maps) {
     gmsh::option::setNumber("Mesh.CompoundParametrization", map);
-    double seconds = 0.;
+    double best = 1e300;
     int ok = 0;
-    for(const auto &t : patches) {
-      std::vector<MVertex *> n;
-      std::vector<SPoint2> uv;
-      std::vector<SPoint3> xyz;
-      std::vector<int> tri;
-      double start = TimeOfDay();
-      ok += computeParametrization(t, n, uv, xyz, tri) ? 1 : 0;
-      seconds += TimeOfDay() - start;
+    for(int run = 0; run < 3 && (run == 0 || best < 10.); run++) {
+      double seconds = 0.;
+      ok = 0;
+      for(const auto &t : patches) {
+        std::vector<MVertex *> n;
+        std::vector<SPoint2> uv;
+        std::vector<SPoint3> xyz;
+        std::vector<int> tri;
+        double start = TimeOfDay();
+        ok += computeParametrization(t, n, uv, xyz, tri) ? 1 : 0;
+        seconds += TimeOfDay() - start;
+      }
+      best = std::min(best, seconds);
     }
-    std::printf("map %d seconds %.4f ok %d\n", map, seconds, ok);
+    std::printf("map %d seconds %.4f ok %d\n", map, best, ok);
     std::fflush(stdout);
   }
   gmsh::finalize();
