@@ -43,12 +43,12 @@ Mesh.MeshSizeMin = $3;
 Mesh.MeshSizeMax = $3;
 GEO
   local start=$(now)
-  timeout "$timeout" "$gmsh" "$geo" -2 -o "$tmp/out.msh" > "$log" 2>&1
+  timeout -k 5 "$timeout" "$gmsh" "$geo" -2 -o "$tmp/out.msh" > "$log" 2>&1
   local status=$?
   local seconds=$(elapsed "$start" "$(now)")
   local triangles=$(awk '/Reparam: surface/ { for(i = 2; i <= NF; i++) if($i == "triangles,") n += $(i - 1) } END { print n + 0 }' "$log")
   local errors=$(grep -c "Error" "$log")
-  [ $status -eq 124 ] && seconds=">$timeout" && triangles="-"
+  if [ $status -eq 124 ] || [ $status -eq 137 ]; then seconds=">$timeout"; triangles="-"; fi
   echo "$seconds $triangles $errors"
 }
 
@@ -56,7 +56,7 @@ printf '| mesh | tri in | patches (largest) | param stock (s) | param Reparam (s
 printf '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n'
 for mesh in "${meshes[@]}"; do
   name=$(basename "$mesh" .stl)
-  timeout "$timeout" "$bench" "$mesh" 3 0 > "$tmp/param.txt" 2> /dev/null
+  timeout -k 5 "$timeout" "$bench" "$mesh" 3 0 > "$tmp/param.txt" 2> /dev/null
   read -r _ tri _ patches _ largest _ _ _ size < <(grep '^triangles' "$tmp/param.txt")
   ours=$(awk '$1 == "map" && $2 == 3 { print $4 }' "$tmp/param.txt")
   stock=$(awk '$1 == "map" && $2 == 0 { print $4 }' "$tmp/param.txt")
