@@ -125,7 +125,7 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
     if(!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()) ||
        !std::isfinite(points[i].z()))
       return reparamFailure(reparamStatus::invalidCoordinates,
-                            "node " + std::to_string(i));
+                            "node " + std::to_string(i), i);
   }
   for(std::size_t t = 0; t < triangles.size(); t++) {
     const auto &tri = triangles[t];
@@ -155,7 +155,8 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
       return reparamFailure(reparamStatus::nonManifoldEdge,
                             "edge " + std::to_string(sides[i].lo) + "-" +
                               std::to_string(sides[i].hi) + " has " +
-                              std::to_string(j - i) + " triangles");
+                              std::to_string(j - i) + " triangles",
+                            sides[i].lo);
     i = j;
   }
 
@@ -193,7 +194,7 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
       int b = sides[i].forward ? sides[i].hi : sides[i].lo;
       if(next[a] >= 0)
         return reparamFailure(reparamStatus::nonManifoldVertex,
-                              "node " + std::to_string(a));
+                              "node " + std::to_string(a), a);
       next[a] = b;
       boundarySides++;
       i++;
@@ -222,7 +223,8 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
     for(int v = start; !used[v]; v = next[v]) {
       if(next[v] < 0)
         return reparamFailure(reparamStatus::nonManifoldVertex,
-                              "open boundary at node " + std::to_string(v));
+                              "open boundary at node " + std::to_string(v),
+                              v);
       used[v] = 1;
       loop.push_back(v);
     }

@@ -5,6 +5,8 @@
 // Gmsh's layout. Used by discrete faces' CreateGeometry, by Compound Surface
 // meshing and by the patch checks of ClassifySurfaces.
 
+#include <cstdio>
+#include <string>
 #include <unordered_map>
 #include "GModel.h"
 #include "MLine.h"
@@ -62,8 +64,17 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   reparamError err = makeDiscretePatch(std::move(points), std::move(tris), patch);
   double t1 = TimeOfDay();
   if(!err.ok()) {
-    Msg::Error("Cannot parametrize triangulation (%lu triangles): %s",
-               triangles.size(), err.what().c_str());
+    std::string where;
+    if(err.node >= 0 && err.node < (int)nodes.size()) {
+      // the patch numbers nodes from 0: tell the user Gmsh's tag and where
+      MVertex *v = nodes[err.node];
+      char s[128];
+      snprintf(s, sizeof(s), " at node %lu (%g, %g, %g)", v->getNum(), v->x(),
+               v->y(), v->z());
+      where = s;
+    }
+    Msg::Error("Cannot parametrize triangulation (%lu triangles)%s: %s",
+               triangles.size(), where.c_str(), err.what().c_str());
     nodes.clear();
     return -1;
   }

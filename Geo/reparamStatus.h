@@ -29,15 +29,21 @@ const char *reparamStatusMessage(reparamStatus status);
 struct reparamError {
   reparamStatus status = reparamStatus::ok;
   std::string detail; // which triangle, node or value
+  int node = -1; // the patch node at fault, if any
   bool ok() const { return status == reparamStatus::ok; }
   // "<status message> (<detail>)"
   std::string what() const;
 };
 
 inline reparamError reparamFailure(reparamStatus status,
-                                   const std::string &detail = "")
+                                   const std::string &detail = "",
+                                   int node = -1)
 {
-  return reparamError{status, detail};
+  reparamError e;
+  e.status = status;
+  e.detail = detail;
+  e.node = node;
+  return e;
 }
 
 #endif

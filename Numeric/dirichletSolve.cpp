@@ -39,7 +39,6 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
 
   // Eliminate the fixed nodes: L_ff x_f = -L_fb x_b. Built column by column
   // from L's compressed columns, whose rows stay sorted: no triplets.
-  Eigen::SparseMatrix<double> Lff(nFree, nFree);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nFree, 2);
   std::vector<int> outer(1, 0);
   std::vector<int> inner;
@@ -62,7 +61,7 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
     }
     if(!fixedColumn) outer.push_back((int)inner.size());
   }
-  Lff = Eigen::Map<const Eigen::SparseMatrix<double> >(
+  Eigen::SparseMatrix<double> Lff = Eigen::Map<const Eigen::SparseMatrix<double> >(
     nFree, nFree, (int)inner.size(), outer.data(), inner.data(),
     values.data());
 

@@ -57,8 +57,9 @@ TEST(discretePatch, rejectsBadInput)
   testTriangulation t = polarDisk(3, 8);
   testTriangulation nan = t;
   nan.points[4] = SPoint3(std::numeric_limits<double>::quiet_NaN(), 0., 0.);
-  EXPECT_EQ(makeDiscretePatch(nan.points, nan.triangles, patch).status,
-            reparamStatus::invalidCoordinates);
+  reparamError nanError = makeDiscretePatch(nan.points, nan.triangles, patch);
+  EXPECT_EQ(nanError.status, reparamStatus::invalidCoordinates);
+  EXPECT_EQ(nanError.node, 4);
 
   testTriangulation repeated = t;
   repeated.triangles[3][1] = repeated.triangles[3][0];
@@ -97,8 +98,9 @@ TEST(discretePatch, rejectsBadInput)
   std::vector<SPoint3> pts = pinched.points;
   pts[rim4] = pts[last];
   pts.pop_back();
-  EXPECT_EQ(makeDiscretePatch(pts, pinched.triangles, patch).status,
-            reparamStatus::nonManifoldVertex);
+  reparamError pinch = makeDiscretePatch(pts, pinched.triangles, patch);
+  EXPECT_EQ(pinch.status, reparamStatus::nonManifoldVertex);
+  EXPECT_EQ(pinch.node, rim0);
 }
 
 TEST(discretePatch, rejectsClosedAndHandles)

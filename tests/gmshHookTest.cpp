@@ -142,6 +142,25 @@ static double relativeResidual(const testTriangulation &tt,
   return worst / scale;
 }
 
+TEST(gmshHook, badNodeIsNamedWithItsGmshTag)
+{
+  // two rim nodes of a disk merged: boundary fans meet at one node
+  testTriangulation t = polarDisk(3, 8);
+  const int rim0 = 1 + 2 * 8, rim4 = 1 + 2 * 8 + 4;
+  for(auto &tri : t.triangles)
+    for(int &v : tri)
+      if(v == rim4) v = rim0;
+  gmshTriangulation g(t); // node rim4 is now in no triangle: not in the patch
+  gmshParametrization p;
+  std::vector<std::string> log = logOf([&] { p = parametrizeWith(g.triangles, 3); });
+  EXPECT_FALSE(p.ok);
+  char expected[64];
+  std::snprintf(expected, sizeof(expected), "at node %lu (1, 0, 0)",
+                g.vertices[rim0]->getNum());
+  EXPECT_TRUE(contains(log, expected)) << expected;
+  EXPECT_TRUE(contains(log, "a node joins several boundary fans"));
+}
+
 TEST(gmshHook, meanValueMatchesGmshOnSyntheticPatches)
 {
   for(const testTriangulation &tt :
