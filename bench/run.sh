@@ -58,17 +58,18 @@ for mesh in "${meshes[@]}"; do
   name=$(basename "$mesh" .stl)
   timeout -k 5 "$timeout" "$bench" "$mesh" 3 0 > "$tmp/param.txt" 2> /dev/null
   read -r _ tri _ patches _ largest _ _ _ size < <(grep '^triangles' "$tmp/param.txt")
+  if [ -z "${tri:-}" ]; then
+    # the split (Gmsh's ClassifySurfaces, the same for both maps) never ended
+    printf '| %s | - | ClassifySurfaces did not end within %s s | - | - | - | - | - | - | - | - |\n' "$name" "$timeout"
+    continue
+  fi
   ours=$(awk '$1 == "map" && $2 == 3 { print $4 }' "$tmp/param.txt")
   stock=$(awk '$1 == "map" && $2 == 0 { print $4 }' "$tmp/param.txt")
-  [ -n "$ours" ] || ours="fail"
+  [ -n "$ours" ] || ours=">$timeout"
   [ -n "$stock" ] || stock=">$timeout"
   ratio=$(awk -v s="$stock" -v o="$ours" 'BEGIN { if(s + 0 > 0 && o + 0 > 0) printf "%.1fx", s / o; else print "-" }')
-  if [ -n "${size:-}" ]; then
-    read -r t0 n0 e0 < <(remesh "$mesh" 0 "$size")
-    read -r t3 n3 e3 < <(remesh "$mesh" 3 "$size")
-  else
-    t0=- n0=- e0=- t3=- n3=- e3=-
-  fi
+  read -r t0 n0 e0 < <(remesh "$mesh" 0 "$size")
+  read -r t3 n3 e3 < <(remesh "$mesh" 3 "$size")
   printf '| %s | %s | %s (%s) | %s | %s | %s | %s | %s | %s | %s | %s / %s |\n' \
     "$name" "${tri:--}" "${patches:--}" "${largest:--}" "$stock" "$ours" "$ratio" "$t0" "$t3" "$n0" "$n3" "$e0" "$e3"
   unset tri patches largest size
