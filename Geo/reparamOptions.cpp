@@ -39,3 +39,10 @@ double opt_mesh_compound_parametrization(OPT_ARGS_NUM)
   }
   return o.parametrization;
 }
+
+double opt_mesh_compound_fill_holes(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) o.fillHoles = (val != 0.);
+  return o.fillHoles ? 1. : 0.;
+}

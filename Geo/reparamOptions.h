@@ -20,6 +20,8 @@ enum class compoundParametrization {
 
 struct reparamOptions {
   int parametrization = (int)compoundParametrization::meanValue;
+  // Mesh.CompoundFillHoles: triangulate inner boundary loops before mapping
+  bool fillHoles = true;
 };
 
 reparamOptions &getReparamOptions();

@@ -16,8 +16,13 @@
 #include "GmshMessage.h"
 #include "MTriangle.h"
 #include "OS.h"
+#include "barycentricMap.h"
+#include "conformalMap.h"
 #include "discretePatch.h"
+#include "harmonicMap.h"
+#include "holeFilling.h"
 #include "meanValueMap.h"
+#include "spectralConformalMap.h"
 #include "reparamOptions.h"
 
 int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
@@ -83,12 +88,49 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                  "%lu triangles taken reversed for the parametrization",
                  triangles.size(), patch.numReorientedTriangles);
 
+  // Holes filled on an extended patch with the same nodes: its (u, v) are
+  // the patch's
+  const discretePatch *mapped = &patch;
+  discretePatch extended;
+  int filledHoles = 0;
+  if(getReparamOptions().fillHoles && patch.boundaryLoops.size() > 1) {
+    holeFilling filling = fillHoles(patch);
+    if(filling.skippedHoles)
+      Msg::Warning("Triangulation (%lu triangles): %d of its %lu holes cannot "
+                   "be filled on their mean plane, left as free boundaries",
+                   triangles.size(), filling.skippedHoles,
+                   patch.boundaryLoops.size() - 1);
+    if(!filling.triangles.empty()) {
+      std::vector<std::array<int, 3> > all = patch.triangles;
+      all.insert(all.end(), filling.triangles.begin(), filling.triangles.end());
+      reparamError fillErr = makeDiscretePatch(patch.points, std::move(all),
+                                               extended);
+      if(fillErr.ok()) {
+        mapped = &extended;
+        filledHoles = filling.filledHoles;
+      }
+      else
+        Msg::Warning("Triangulation (%lu triangles): filling its holes gives "
+                     "an invalid patch (%s), holes left as free boundaries",
+                     triangles.size(), fillErr.what().c_str());
+    }
+  }
+  double t2 = TimeOfDay();
+
   patchMap map;
   switch((compoundParametrization)choice) {
-  case compoundParametrization::meanValue: map = meanValueMap(patch); break;
+  case compoundParametrization::harmonic: map = harmonicMap(*mapped); break;
+  case compoundParametrization::barycentric:
+    map = barycentricMap(*mapped);
+    break;
+  case compoundParametrization::meanValue: map = meanValueMap(*mapped); break;
+  case compoundParametrization::conformal: map = conformalMap(*mapped); break;
+  case compoundParametrization::spectral:
+    map = spectralConformalMap(*mapped);
+    break;
   default:
     Msg::Error("Mesh.CompoundParametrization = %d (%s) is not implemented "
-               "yet: use 0 (Gmsh) or 3 (mean value)",
+               "yet: use 0 to 5",
                choice, compoundParametrizationName(choice));
     nodes.clear();
     return -1;
@@ -106,11 +148,12 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   stl_vertices_uv.resize(nodes.size());
   for(std::size_t i = 0; i < nodes.size(); i++)
     stl_vertices_uv[i] = SPoint2(map.uv[2 * i], map.uv[2 * i + 1]);
-  Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s: "
-            "patch %.3g s, assemble %.3g s, solve %.3g s",
+  Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
+            "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "
+            "%.3g s",
             compoundParametrizationName(choice), nodes.size(),
             triangles.size(), patch.boundaryLoops.size() - 1,
-            patch.boundaryLoops.size() == 2 ? "" : "s", t1 - t0,
-            map.assembleTime, map.solveTime);
+            patch.boundaryLoops.size() == 2 ? "" : "s", filledHoles, t1 - t0,
+            t2 - t1, map.assembleTime, map.solveTime);
   return 1;
 }

@@ -1,10 +1,8 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
-#include "OS.h"
 #include "SVector3.h"
-#include "dirichletSolve.h"
+#include "diskMap.h"
 #include "meanValueMap.h"
-#include "patchBoundary.h"
 
 namespace {
 
@@ -35,17 +33,5 @@ triangleWeights meanValueWeights(const SPoint3 &x0, const SPoint3 &x1,
 
 patchMap meanValueMap(const discretePatch &patch)
 {
-  patchMap map;
-  const std::size_t n = patch.points.size();
-  double t0 = TimeOfDay();
-  Eigen::SparseMatrix<double> A =
-    assembleWeightedLaplacian(patch, meanValueWeights);
-  map.uv.assign(2 * n, 0.);
-  std::vector<char> isFixed(n, 0);
-  mapLoopToUnitCircle(patch, patch.outerLoop, map.uv, isFixed);
-  double t1 = TimeOfDay();
-  map.error = dirichletSolve(A, isFixed, map.uv, sparseFactorization::lu);
-  map.assembleTime = t1 - t0;
-  map.solveTime = TimeOfDay() - t1;
-  return map;
+  return diskMap(patch, meanValueWeights, sparseFactorization::lu);
 }

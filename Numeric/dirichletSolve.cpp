@@ -27,19 +27,20 @@ namespace {
 
 reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
                             const std::vector<char> &isFixed,
-                            std::vector<double> &uv,
+                            Eigen::MatrixXd &x,
                             sparseFactorization factorization)
 {
   const int n = (int)L.rows();
+  const int k = (int)x.cols();
   std::vector<int> freeIndex(n, -1);
   int nFree = 0;
   for(int i = 0; i < n; i++)
     if(!isFixed[i]) freeIndex[i] = nFree++;
   if(nFree == 0) return reparamError();
 
-  // Eliminate the fixed nodes: L_ff x_f = -L_fb x_b. Built column by column
-  // from L's compressed columns, whose rows stay sorted: no triplets.
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nFree, 2);
+  // Eliminate the fixed unknowns: L_ff x_f = -L_fb x_b. Built column by
+  // column from L's compressed columns, whose rows stay sorted: no triplets.
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nFree, k);
   std::vector<int> outer(1, 0);
   std::vector<int> inner;
   std::vector<double> values;
@@ -50,10 +51,8 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
     for(Eigen::SparseMatrix<double>::InnerIterator it(L, col); it; ++it) {
       int row = freeIndex[it.row()];
       if(row < 0) continue;
-      if(fixedColumn) {
-        rhs(row, 0) -= it.value() * uv[2 * col];
-        rhs(row, 1) -= it.value() * uv[2 * col + 1];
-      }
+      if(fixedColumn)
+        rhs.row(row) -= it.value() * x.row(col);
       else {
         inner.push_back(row);
         values.push_back(it.value());
@@ -61,15 +60,16 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
     }
     if(!fixedColumn) outer.push_back((int)inner.size());
   }
-  Eigen::SparseMatrix<double> Lff = Eigen::Map<const Eigen::SparseMatrix<double> >(
-    nFree, nFree, (int)inner.size(), outer.data(), inner.data(),
-    values.data());
+  Eigen::SparseMatrix<double> Lff =
+    Eigen::Map<const Eigen::SparseMatrix<double> >(
+      nFree, nFree, (int)inner.size(), outer.data(), inner.data(),
+      values.data());
 
-  Eigen::MatrixXd x;
+  Eigen::MatrixXd xFree;
   reparamError err;
   if(factorization == sparseFactorization::cholesky) {
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > solver;
-    err = factorAndSolve(solver, Lff, rhs, x);
+    err = factorAndSolve(solver, Lff, rhs, xFree);
   }
   else {
     // KLU (SuiteSparse): AMD ordering, left-looking LU. Measured fastest of
@@ -77,13 +77,24 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
     // dominant rows): 1.6 ms for 1.7k unknowns and 7 ms for 5.6k, against
     // 2.3 / 8 ms for UMFPACK and 7 / 30 ms for Eigen's SparseLU.
     Eigen::KLU<Eigen::SparseMatrix<double> > solver;
-    err = factorAndSolve(solver, Lff, rhs, x);
+    err = factorAndSolve(solver, Lff, rhs, xFree);
   }
   if(!err.ok()) return err;
-  for(int i = 0; i < n; i++) {
-    if(freeIndex[i] < 0) continue;
-    uv[2 * i] = x(freeIndex[i], 0);
-    uv[2 * i + 1] = x(freeIndex[i], 1);
-  }
+  for(int i = 0; i < n; i++)
+    if(freeIndex[i] >= 0) x.row(i) = xFree.row(freeIndex[i]);
   return reparamError();
+}
+
+reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
+                            const std::vector<char> &isFixed,
+                            std::vector<double> &uv,
+                            sparseFactorization factorization)
+{
+  // uv is the row-major n x 2 matrix of the two right-hand sides
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> > m(
+    uv.data(), (Eigen::Index)(uv.size() / 2), 2);
+  Eigen::MatrixXd x = m;
+  reparamError err = dirichletSolve(L, isFixed, x, factorization);
+  if(err.ok()) m = x;
+  return err;
 }

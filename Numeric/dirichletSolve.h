@@ -7,6 +7,7 @@
 #define DIRICHLET_SOLVE_H
 
 #include <vector>
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include "reparamStatus.h"
 
@@ -15,8 +16,15 @@ enum class sparseFactorization {
   lu // general: KLU
 };
 
-// uv holds 2 values per node; on input those of the fixed nodes are set,
-// on success all are. One factorization serves both coordinates.
+// Each column of x is one right-hand side: on input the rows of the fixed
+// unknowns are set, on success all are. One factorization serves all columns.
+reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
+                            const std::vector<char> &isFixed,
+                            Eigen::MatrixXd &x,
+                            sparseFactorization factorization);
+
+// The same for the maps' layout: uv holds 2 values per node, u and v being
+// the two right-hand sides
 reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
                             const std::vector<char> &isFixed,
                             std::vector<double> &uv,

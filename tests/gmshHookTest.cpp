@@ -19,6 +19,12 @@
 
 namespace {
 
+  // Gmsh's own map leaves holes free: parity needs ours to do the same
+  struct holesLeftFree {
+    holesLeftFree() { gmsh::option::setNumber("Mesh.CompoundFillHoles", 0); }
+    ~holesLeftFree() { gmsh::option::setNumber("Mesh.CompoundFillHoles", 1); }
+  };
+
   std::vector<std::string> logOf(const std::function<void()> &f)
   {
     gmsh::logger::start();
@@ -81,7 +87,7 @@ TEST(gmshHook, optionDefaultAndRange)
 TEST(gmshHook, unimplementedMapsFailClearly)
 {
   gmshTriangulation t(polarDisk(4, 16));
-  for(int choice : {1, 2, 4, 5, 6}) {
+  for(int choice : {6}) {
     gmshParametrization p;
     std::vector<std::string> log =
       logOf([&] { p = parametrizeWith(t.triangles, choice); });
@@ -163,6 +169,7 @@ TEST(gmshHook, badNodeIsNamedWithItsGmshTag)
 
 TEST(gmshHook, meanValueMatchesGmshOnSyntheticPatches)
 {
+  holesLeftFree free;
   for(const testTriangulation &tt :
       {hemisphere(12, 48), polarDisk(10, 40, 1.3, 0.2),
        liftPlanar(polarDiskWithHoles(10, 40, {{{3, 5, 0, 6}}}), 0.3)}) {
@@ -190,6 +197,7 @@ TEST(gmshHook, meanValueMatchesGmshOnSyntheticPatches)
 
 TEST(gmshHook, meanValueMatchesGmshOnTutorialPatches)
 {
+  holesLeftFree free;
   gmsh::clear();
   gmsh::merge(tutorialFile("dome.stl"));
   gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
@@ -211,6 +219,7 @@ TEST(gmshHook, meanValueMatchesGmshOnTutorialPatches)
 
 TEST(gmshHook, remeshMatchesGmshElementCount)
 {
+  holesLeftFree free;
   std::size_t stock = remeshDome(0), ours = remeshDome(3);
   ASSERT_GT(stock, 1000u);
   EXPECT_LE(std::fabs((double)ours - (double)stock), 0.01 * stock)

@@ -136,3 +136,73 @@ double minKappa(const testTriangulation &t)
                                   t.points[tri[2]]));
   return k;
 }
+
+testTriangulation rectangleGrid(int nx, int ny, double lx, double ly)
+{
+  testTriangulation t;
+  for(int j = 0; j <= ny; j++)
+    for(int i = 0; i <= nx; i++)
+      t.points.push_back(SPoint3(lx * i / nx, ly * j / ny, 0.));
+  auto id = [&](int i, int j) { return j * (nx + 1) + i; };
+  for(int j = 0; j < ny; j++) {
+    for(int i = 0; i < nx; i++) {
+      int a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
+      if((i + j) % 2) {
+        t.triangles.push_back({a, b, d});
+        t.triangles.push_back({a, d, c});
+      }
+      else {
+        t.triangles.push_back({a, b, c});
+        t.triangles.push_back({b, d, c});
+      }
+    }
+  }
+  return t;
+}
+
+testTriangulation halfCylinder(int nAround, int nAlong, double length)
+{
+  testTriangulation t = rectangleGrid(nAround, nAlong, M_PI, length);
+  for(auto &p : t.points)
+    p = SPoint3(std::cos(p.x()), std::sin(p.x()), p.y());
+  return t;
+}
+
+testTriangulation sphericalCap(int rings, int sectors, double angle)
+{
+  testTriangulation t = polarDisk(rings, sectors);
+  for(auto &p : t.points) {
+    double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    double phi = std::atan2(p.y(), p.x()), theta = r * angle;
+    p = SPoint3(std::sin(theta) * std::cos(phi),
+                std::sin(theta) * std::sin(phi), std::cos(theta));
+  }
+  return t;
+}
+
+testTriangulation saddleStrip(int nx, int ny, double length, double amplitude)
+{
+  testTriangulation t = rectangleGrid(nx, ny, length, 1.);
+  for(auto &p : t.points) {
+    double x = p.x() - 0.5 * length, y = p.y() - 0.5;
+    p = SPoint3(p.x(), p.y(), amplitude * (x * x - y * y));
+  }
+  return t;
+}
+
+testTriangulation jitteredGrid(int n, double amount, unsigned seed)
+{
+  testTriangulation t = rectangleGrid(n, n, 1., 1.);
+  unsigned state = seed;
+  auto random = [&]() { // in [-0.5, 0.5)
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / double(1 << 24) - 0.5;
+  };
+  for(auto &p : t.points) {
+    if(p.x() <= 0. || p.x() >= 1. || p.y() <= 0. || p.y() >= 1.) continue;
+    double dy = amount * random() / n;
+    double dx = amount * random() / n;
+    p = SPoint3(p.x() + dx, p.y() + dy, 0.);
+  }
+  return t;
+}

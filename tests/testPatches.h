@@ -33,8 +33,28 @@ testTriangulation polarDiskWithHoles(int rings, int sectors,
 // pushed to within `gap` of its left neighbours: slivers with kappa ~ gap
 testTriangulation sliverGrid(int n, double gap);
 
+// rectangleGrid(n, n, 1, 1) with its interior nodes moved at random (a
+// fixed linear congruential sequence of `seed`) by up to amount / (2 n)
+// along x and y: amount close to 1 gives slivers and caps
+testTriangulation jitteredGrid(int n, double amount, unsigned seed);
+
 // Apply z = f(x, y) to every node
 testTriangulation liftPlanar(testTriangulation t, double amplitude);
+
+// nx x ny cells over [0, lx] x [0, ly] (z = 0), diagonals alternating
+testTriangulation rectangleGrid(int nx, int ny, double lx, double ly);
+
+// The unit-radius half cylinder of the given length: nAround x nAlong cells,
+// each a planar rectangle cut in two, so that the polyhedron is exactly
+// developable
+testTriangulation halfCylinder(int nAround, int nAlong, double length);
+
+// polarDisk on the unit sphere, up to the polar angle `angle` (radians)
+testTriangulation sphericalCap(int rings, int sectors, double angle);
+
+// rectangleGrid(nx, ny, length, 1) bent to the saddle
+// z = amplitude ((x - length/2)^2 - (y - 1/2)^2): elongated, not developable
+testTriangulation saddleStrip(int nx, int ny, double length, double amplitude);
 
 discretePatch makePatchOrDie(const testTriangulation &t);
 

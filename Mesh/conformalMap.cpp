@@ -1,0 +1,85 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include "OS.h"
+#include "conformalAssembly.h"
+#include "conformalMap.h"
+#include "dirichletSolve.h"
+
+std::array<int, 2> farthestBoundaryPair(const discretePatch &patch)
+{
+  const std::vector<int> &loop = patch.boundaryLoops[patch.outerLoop];
+  const std::size_t m = loop.size();
+  auto d2 = [&](int a, int b) {
+    return patch.points[a].distance(patch.points[b]) *
+           patch.points[a].distance(patch.points[b]);
+  };
+  std::array<int, 2> best{{loop[0], loop[m / 2]}};
+  double bestD2 = -1.;
+  if(m <= 2048) {
+    for(std::size_t i = 0; i < m; i++)
+      for(std::size_t j = i + 1; j < m; j++) {
+        double d = d2(loop[i], loop[j]);
+        if(d > bestD2) {
+          bestD2 = d;
+          best = {{loop[i], loop[j]}};
+        }
+      }
+    return best;
+  }
+  for(std::size_t start = 0; start < m; start += m / 4) {
+    int a = loop[start], b = a;
+    for(int sweep = 0; sweep < 3; sweep++) {
+      double far = -1.;
+      int next = a;
+      for(int x : loop) {
+        double d = d2(a, x);
+        if(d > far) {
+          far = d;
+          next = x;
+        }
+      }
+      b = a;
+      a = next;
+      if(far > bestD2) {
+        bestD2 = far;
+        best = {{b, a}};
+      }
+    }
+  }
+  return best;
+}
+
+patchMap conformalMap(const discretePatch &patch, std::array<int, 2> pins)
+{
+  patchMap map;
+  const std::size_t n = patch.points.size();
+  double t0 = TimeOfDay();
+  Eigen::SparseMatrix<double> L = assembleConformalEnergy(patch);
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(2 * n, 1);
+  std::vector<char> isFixed(2 * n, 0);
+  const double pinU[2] = {-1., 1.};
+  for(int p = 0; p < 2; p++) {
+    x(2 * pins[p], 0) = pinU[p];
+    isFixed[2 * pins[p]] = isFixed[2 * pins[p] + 1] = 1;
+  }
+  double t1 = TimeOfDay();
+  if(pins[0] == pins[1])
+    map.error = reparamFailure(reparamStatus::solverFailed,
+                               "the two pinned nodes are the same");
+  else
+    map.error = dirichletSolve(L, isFixed, x, sparseFactorization::cholesky);
+  map.assembleTime = t1 - t0;
+  map.solveTime = TimeOfDay() - t1;
+  if(map.error.ok()) map.uv.assign(x.data(), x.data() + 2 * n);
+  return map;
+}
+
+patchMap conformalMap(const discretePatch &patch)
+{
+  double t0 = TimeOfDay();
+  std::array<int, 2> pins = farthestBoundaryPair(patch);
+  double t1 = TimeOfDay();
+  patchMap map = conformalMap(patch, pins);
+  map.assembleTime += t1 - t0;
+  return map;
+}

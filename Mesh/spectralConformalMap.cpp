@@ -1,0 +1,49 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <cmath>
+#include "OS.h"
+#include "conformalAssembly.h"
+#include "generalizedEigenSolve.h"
+#include "spectralConformalMap.h"
+
+patchMap spectralConformalMap(const discretePatch &patch, spectralMapInfo *info)
+{
+  patchMap map;
+  const std::size_t n = patch.points.size();
+  double t0 = TimeOfDay();
+  Eigen::SparseMatrix<double> L = assembleConformalEnergy(patch);
+  Eigen::VectorXd B = Eigen::VectorXd::Zero(2 * n);
+  std::size_t numBoundary = 0;
+  for(const auto &loop : patch.boundaryLoops) {
+    for(int i : loop) B[2 * i] = B[2 * i + 1] = 1.;
+    numBoundary += loop.size();
+  }
+  // The translations: zero energy, to be excluded
+  Eigen::MatrixXd translations = Eigen::MatrixXd::Zero(2 * n, 2);
+  for(std::size_t i = 0; i < n; i++) {
+    translations(2 * i, 0) = 1.;
+    translations(2 * i + 1, 1) = 1.;
+  }
+  // lambda is the conformal energy of a map whose boundary has a unit
+  // moment: about the distortion over the number of boundary nodes. A shift
+  // of that order keeps the Lanczos iterations few (measured: the spectrum
+  // above the Fiedler pair is then well separated after the inversion).
+  const double shift = -1. / (double)numBoundary;
+  double t1 = TimeOfDay();
+  eigenpairResult eig =
+    smallestGeneralizedEigenpair(L, B, translations, shift);
+  map.assembleTime = t1 - t0;
+  map.solveTime = TimeOfDay() - t1;
+  if(info) {
+    info->lambda = eig.lambda;
+    info->iterations = eig.iterations;
+    info->solves = eig.solves;
+  }
+  map.error = eig.error;
+  if(!map.error.ok()) return map;
+  // x^T B x = 1 is a unit boundary moment: rescale to a unit RMS radius
+  const double scale = std::sqrt((double)numBoundary);
+  map.uv.resize(2 * n);
+  for(std::size_t k = 0; k < 2 * n; k++) map.uv[k] = scale * eig.x[k];
+  return map;
+}
