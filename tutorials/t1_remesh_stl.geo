@@ -7,6 +7,12 @@
 //
 //   gmsh t1_remesh_stl.geo -2                  (mean value map, the default)
 //   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 0   (Gmsh's own)
+//   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 5   (spectral)
+//   gmsh t1_remesh_stl.geo -2 -setnumber FillHoles 0  (holes left free)
+//
+// Maps 1 to 3 put the outer boundary on the unit circle; maps 4 and 5 leave
+// it free (conformal). The two holes are filled on their mean plane before
+// mapping (Mesh.CompoundFillHoles) and stay holes in the new mesh.
 //
 // The log has one "Reparam:" line per parametrization (stage times) and one
 // per meshed surface (triangles, kappa min and mean).
@@ -17,6 +23,7 @@ DefineConstant[
                                 4 = "FE conformal", 5 = "Spectral conformal",
                                 6 = "Automatic"},
                      Name "Reparam/Parametrization"}
+  FillHoles = {1, Choices{0, 1}, Name "Reparam/Fill holes"}
   Size = {0.05, Min 0.005, Max 0.5, Step 0.005,
               Name "Reparam/Mesh size"}
 ];
@@ -26,6 +33,7 @@ Merge "dome.stl";
 // Mesh.CompoundParametrization must be set before CreateGeometry, which
 // computes the parametrizations
 Mesh.CompoundParametrization = Parametrization;
+Mesh.CompoundFillHoles = FillHoles;
 
 // Split the triangulation where the angle between triangles exceeds 40
 // degrees, keep the boundary, and make every patch parametrizable (1)

@@ -1,0 +1,34 @@
+#!/usr/bin/env python3
+"""Writes a smooth bumpy square patch of about N triangles as a binary STL:
+the bench's "100k-triangle patch" for the per-map speed targets.
+
+    bench/make-large-patch.py out.stl [N=100000]
+"""
+import math
+import struct
+import sys
+
+out = sys.argv[1]
+target = int(sys.argv[2]) if len(sys.argv) > 2 else 100000
+n = int(math.ceil(math.sqrt(target / 2.0)))
+
+
+def point(i, j):
+    x, y = i / n, j / n
+    return (x, y, 0.15 * math.sin(3.0 * x) * math.cos(4.0 * y))
+
+
+triangles = []
+for j in range(n):
+    for i in range(n):
+        a, b = point(i, j), point(i + 1, j)
+        c, d = point(i, j + 1), point(i + 1, j + 1)
+        triangles += [(a, b, d), (a, d, c)]
+with open(out, "wb") as f:
+    f.write(b"Reparam bench: bumpy square patch".ljust(80, b"\0"))
+    f.write(struct.pack("<I", len(triangles)))
+    for t in triangles:
+        f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
+        for p in t:
+            f.write(struct.pack("<3f", *p))
+        f.write(b"\0\0")
