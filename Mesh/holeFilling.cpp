@@ -27,41 +27,54 @@ namespace {
            signedArea2(c[0], c[1], a[0], a[1], q[0], q[1]) > 0.;
   }
 
-  // d strictly inside the circumcircle of the counterclockwise (a, b, c)
+  // d clearly inside the circumcircle of the counterclockwise (a, b, c)
   bool inCircumcircle(const double *a, const double *b, const double *c,
                       const double *d)
   {
     double ax = a[0] - d[0], ay = a[1] - d[1], bx = b[0] - d[0],
            by = b[1] - d[1], cx = c[0] - d[0], cy = c[1] - d[1];
-    double det = (ax * ax + ay * ay) * (bx * cy - cx * by) -
-                 (bx * bx + by * by) * (ax * cy - cx * ay) +
-                 (cx * cx + cy * cy) * (ax * by - bx * ay);
-    return det > 0.;
+    double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by,
+           c2 = cx * cx + cy * cy;
+    double det = a2 * (bx * cy - cx * by) - b2 * (ax * cy - cx * ay) +
+                 c2 * (ax * by - bx * ay);
+    // Holes are often circles: their nodes are cocircular up to rounding,
+    // and without a tolerance the flips would cycle
+    double scale = std::max(a2, std::max(b2, c2));
+    return det > 1e-10 * scale * scale;
   }
 
-  // Lawson's flips among the hole's own triangles, in the projection plane
+  // Lawson's flips among the hole's own triangles, in the projection plane.
+  // A hole has few triangles: sorted vectors, no node-based containers
   void delaunayFlips(const discretePatch &patch,
                      const std::vector<std::array<double, 2> > &q,
-                     std::map<int, int> &local,
+                     const std::map<int, int> &local,
                      std::vector<std::array<int, 3> > &tris)
   {
-    auto P = [&](int node) { return q[local[node]].data(); };
+    auto P = [&](int node) { return q[local.find(node)->second].data(); };
+    std::vector<std::pair<edgeKey, int> > sides;
+    std::vector<edgeKey> present;
     for(int pass = 0; pass < 100; pass++) {
-      std::map<edgeKey, std::vector<int> > byEdge;
+      sides.clear();
       for(std::size_t t = 0; t < tris.size(); t++)
         for(int k = 0; k < 3; k++)
-          byEdge[key(tris[t][k], tris[t][(k + 1) % 3])].push_back((int)t);
-      std::set<edgeKey> present;
-      for(auto &e : byEdge) present.insert(e.first);
+          sides.push_back({key(tris[t][k], tris[t][(k + 1) % 3]), (int)t});
+      std::sort(sides.begin(), sides.end());
+      present.clear();
+      for(const auto &side : sides) present.push_back(side.first);
+      auto isPresent = [&](const edgeKey &e) {
+        return std::binary_search(present.begin(), present.end(), e);
+      };
+      std::vector<edgeKey> created;
       bool flipped = false;
       std::vector<char> touched(tris.size(), 0);
-      for(auto &e : byEdge) {
-        if(e.second.size() != 2) continue;
-        int t1 = e.second[0], t2 = e.second[1];
+      for(std::size_t s = 0; s + 1 < sides.size(); s++) {
+        if(sides[s].first != sides[s + 1].first) continue;
+        const edgeKey e = sides[s].first;
+        int t1 = sides[s].second, t2 = sides[s + 1].second;
         if(touched[t1] || touched[t2]) continue;
         // t1 = (a, b, c) with the edge (a, b); d the apex of t2
         int k1 = 0;
-        while(key(tris[t1][k1], tris[t1][(k1 + 1) % 3]) != e.first) k1++;
+        while(key(tris[t1][k1], tris[t1][(k1 + 1) % 3]) != e) k1++;
         int a = tris[t1][k1], b = tris[t1][(k1 + 1) % 3],
             c = tris[t1][(k1 + 2) % 3];
         int d = -1;
@@ -74,11 +87,14 @@ namespace {
            signedArea2(P(d)[0], P(d)[1], P(b)[0], P(b)[1], P(c)[0], P(c)[1]) <=
              0.)
           continue;
-        if(isPatchEdge(patch, c, d) || present.count(key(c, d))) continue;
+        const edgeKey cd = key(c, d);
+        if(isPatchEdge(patch, c, d) || isPresent(cd) ||
+           std::find(created.begin(), created.end(), cd) != created.end())
+          continue;
         tris[t1] = {{c, a, d}};
         tris[t2] = {{d, b, c}};
         touched[t1] = touched[t2] = 1;
-        present.insert(key(c, d));
+        created.push_back(cd);
         flipped = true;
       }
       if(!flipped) return;
