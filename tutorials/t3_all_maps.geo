@@ -3,7 +3,7 @@
 // Remeshes dome.stl (a bumpy dome with two holes and slivers) once with each
 // parametrization and saves t3_map<N>.msh for each:
 //
-//   gmsh t3_all_maps.geo -0
+//   gmsh t3_all_maps.geo -parse_and_exit
 //
 // Compare the "Reparam: surface ..." lines of the log: the barycentric map
 // (2) ignores the geometry and gives the planar mesher a distorted metric;
