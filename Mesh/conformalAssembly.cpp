@@ -5,52 +5,33 @@
 #include "harmonicMap.h"
 #include "patchAssembly.h"
 
-Eigen::SparseMatrix<double> assembleConformalEnergy(const discretePatch &patch)
+Eigen::SparseMatrix<std::complex<double> >
+assembleConformalEnergy(const discretePatch &patch)
 {
-  // The stiffness matrix of one coordinate, expanded to both: column j of A
-  // gives columns 2j (rows 2i) and 2j + 1 (rows 2i + 1), rows staying sorted
-  Eigen::SparseMatrix<double> A =
-    assembleWeightedLaplacian(patch, cotangentWeights);
-  const int n = (int)A.rows();
-  Eigen::SparseMatrix<double> D(2 * n, 2 * n);
-  D.resizeNonZeros(2 * A.nonZeros());
-  int *outer = D.outerIndexPtr(), *inner = D.innerIndexPtr();
-  double *value = D.valuePtr();
-  int k = 0;
-  outer[0] = 0;
-  for(int j = 0; j < n; j++) {
-    for(int c = 0; c < 2; c++) {
-      for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-        inner[k] = 2 * (int)it.row() + c;
-        value[k++] = it.value();
-      }
-      outer[2 * j + c + 1] = k;
-    }
-  }
-
+  Eigen::SparseMatrix<std::complex<double> > H =
+    assembleWeightedLaplacian(patch, cotangentWeights)
+      .cast<std::complex<double> >();
   // Area of the image: sum over boundary edges a -> b (the patch on their
-  // left) of (u_a v_b - u_b v_a) / 2, entering E_LSCM with a minus sign
-  std::vector<Eigen::Triplet<double> > area;
+  // left) of (u_a v_b - u_b v_a) / 2 = Im(conj(z_a) z_b) / 2, entering
+  // E_LSCM with a minus sign. Boundary edges are edges of the pattern: no
+  // insertion.
+  const std::complex<double> half(0., 0.5);
   for(const auto &loop : patch.boundaryLoops) {
     for(std::size_t i = 0; i < loop.size(); i++) {
       int a = loop[i], b = loop[(i + 1) % loop.size()];
-      area.emplace_back(2 * a, 2 * b + 1, -0.5);
-      area.emplace_back(2 * b + 1, 2 * a, -0.5);
-      area.emplace_back(2 * b, 2 * a + 1, 0.5);
-      area.emplace_back(2 * a + 1, 2 * b, 0.5);
+      H.coeffRef(a, b) += half;
+      H.coeffRef(b, a) -= half;
     }
   }
-  Eigen::SparseMatrix<double> C(2 * n, 2 * n);
-  C.setFromTriplets(area.begin(), area.end());
-  return D + C;
+  return H;
 }
 
-double dirichletEnergy(const discretePatch &patch, const std::vector<double> &uv)
+double dirichletEnergy(const discretePatch &patch,
+                       const std::vector<double> &uv)
 {
   double energy = 0.;
   for(const auto &t : patch.triangles) {
-    triangleWeights w = cotangentWeights(patch.points[t[0]],
-                                         patch.points[t[1]],
+    triangleWeights w = cotangentWeights(patch.points[t[0]], patch.points[t[1]],
                                          patch.points[t[2]]);
     // E_D = 1/2 sum over edges of w_ij |u_i - u_j|^2
     for(int i = 0; i < 3; i++) {

@@ -54,23 +54,27 @@ patchMap conformalMap(const discretePatch &patch, std::array<int, 2> pins)
   patchMap map;
   const std::size_t n = patch.points.size();
   double t0 = TimeOfDay();
-  Eigen::SparseMatrix<double> L = assembleConformalEnergy(patch);
-  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(2 * n, 1);
-  std::vector<char> isFixed(2 * n, 0);
-  const double pinU[2] = {-1., 1.};
-  for(int p = 0; p < 2; p++) {
-    x(2 * pins[p], 0) = pinU[p];
-    isFixed[2 * pins[p]] = isFixed[2 * pins[p] + 1] = 1;
-  }
+  Eigen::SparseMatrix<std::complex<double> > H = assembleConformalEnergy(patch);
+  Eigen::MatrixXcd z = Eigen::MatrixXcd::Zero(n, 1);
+  std::vector<char> isFixed(n, 0);
+  z(pins[0], 0) = -1.;
+  z(pins[1], 0) = 1.;
+  isFixed[pins[0]] = isFixed[pins[1]] = 1;
   double t1 = TimeOfDay();
   if(pins[0] == pins[1])
     map.error = reparamFailure(reparamStatus::solverFailed,
                                "the two pinned nodes are the same");
   else
-    map.error = dirichletSolve(L, isFixed, x, sparseFactorization::cholesky);
+    map.error = dirichletSolve(H, isFixed, z);
   map.assembleTime = t1 - t0;
   map.solveTime = TimeOfDay() - t1;
-  if(map.error.ok()) map.uv.assign(x.data(), x.data() + 2 * n);
+  if(map.error.ok()) {
+    map.uv.resize(2 * n);
+    for(std::size_t i = 0; i < n; i++) {
+      map.uv[2 * i] = z(i, 0).real();
+      map.uv[2 * i + 1] = z(i, 0).imag();
+    }
+  }
   return map;
 }
 

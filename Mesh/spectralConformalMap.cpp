@@ -11,19 +11,15 @@ patchMap spectralConformalMap(const discretePatch &patch, spectralMapInfo *info)
   patchMap map;
   const std::size_t n = patch.points.size();
   double t0 = TimeOfDay();
-  Eigen::SparseMatrix<double> L = assembleConformalEnergy(patch);
-  Eigen::VectorXd B = Eigen::VectorXd::Zero(2 * n);
+  Eigen::SparseMatrix<std::complex<double> > H = assembleConformalEnergy(patch);
+  Eigen::VectorXd B = Eigen::VectorXd::Zero(n);
   std::size_t numBoundary = 0;
   for(const auto &loop : patch.boundaryLoops) {
-    for(int i : loop) B[2 * i] = B[2 * i + 1] = 1.;
+    for(int i : loop) B[i] = 1.;
     numBoundary += loop.size();
   }
-  // The translations: zero energy, to be excluded
-  Eigen::MatrixXd translations = Eigen::MatrixXd::Zero(2 * n, 2);
-  for(std::size_t i = 0; i < n; i++) {
-    translations(2 * i, 0) = 1.;
-    translations(2 * i + 1, 1) = 1.;
-  }
+  // The translations z = c: zero energy, to be excluded
+  Eigen::MatrixXcd translations = Eigen::MatrixXcd::Ones(n, 1);
   // lambda is the conformal energy of a map whose boundary has a unit
   // moment: 0 for a developable patch and tiny for smooth ones (1e-9 on a
   // bumpy 100k-triangle square, 1e-4 on a 60-degree spherical cap of 40
@@ -34,8 +30,7 @@ patchMap spectralConformalMap(const discretePatch &patch, spectralMapInfo *info)
   // along the translations, which are projected out anyway.
   const double shift = -1e-4 / (double)numBoundary;
   double t1 = TimeOfDay();
-  eigenpairResult eig =
-    smallestGeneralizedEigenpair(L, B, translations, shift);
+  eigenpairResult eig = smallestGeneralizedEigenpair(H, B, translations, shift);
   map.assembleTime = t1 - t0;
   map.solveTime = TimeOfDay() - t1;
   if(info) {
@@ -48,6 +43,9 @@ patchMap spectralConformalMap(const discretePatch &patch, spectralMapInfo *info)
   // x^T B x = 1 is a unit boundary moment: rescale to a unit RMS radius
   const double scale = std::sqrt((double)numBoundary);
   map.uv.resize(2 * n);
-  for(std::size_t k = 0; k < 2 * n; k++) map.uv[k] = scale * eig.x[k];
+  for(std::size_t i = 0; i < n; i++) {
+    map.uv[2 * i] = scale * eig.x[i].real();
+    map.uv[2 * i + 1] = scale * eig.x[i].imag();
+  }
   return map;
 }

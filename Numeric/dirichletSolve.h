@@ -6,14 +6,15 @@
 #ifndef DIRICHLET_SOLVE_H
 #define DIRICHLET_SOLVE_H
 
+#include <complex>
 #include <vector>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include "reparamStatus.h"
 
 enum class sparseFactorization {
-  cholesky, // symmetric positive definite: SimplicialLDLT
-  lu // general: KLU
+  cholesky, // symmetric (Hermitian) positive definite: SimplicialLDLT
+  lu // general, real only: KLU
 };
 
 // Each column of x is one right-hand side: on input the rows of the fixed
@@ -22,6 +23,12 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
                             const std::vector<char> &isFixed,
                             Eigen::MatrixXd &x,
                             sparseFactorization factorization);
+
+// The same for a Hermitian L over complex unknowns (the conformal energy with
+// z = u + i v): Cholesky only
+reparamError dirichletSolve(const Eigen::SparseMatrix<std::complex<double> > &L,
+                            const std::vector<char> &isFixed,
+                            Eigen::MatrixXcd &x);
 
 // The same for the maps' layout: uv holds 2 values per node, u and v being
 // the two right-hand sides

@@ -1,5 +1,6 @@
 // Reparam - the shared Dirichlet solve against a dense solution
 
+#include <complex>
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 #include "dirichletSolve.h"
@@ -59,7 +60,9 @@ TEST(dirichletSolve, choleskyMatchesDense)
   fixed[0] = fixed[10] = 1;
   std::vector<double> uv(22, 0.);
   uv[20] = 10.;
-  ASSERT_TRUE(dirichletSolve(chain(11, 0.), fixed, uv, sparseFactorization::cholesky).ok());
+  ASSERT_TRUE(
+    dirichletSolve(chain(11, 0.), fixed, uv, sparseFactorization::cholesky)
+      .ok());
   for(int i = 0; i < 11; i++) EXPECT_NEAR(uv[2 * i], i, 1e-12);
 }
 
@@ -80,4 +83,33 @@ TEST(dirichletSolve, singularSystemFails)
   std::vector<double> uv(6, 1.);
   reparamError err = dirichletSolve(L, fixed, uv, sparseFactorization::lu);
   EXPECT_EQ(err.status, reparamStatus::solverFailed);
+}
+
+TEST(dirichletSolve, hermitianMatchesDense)
+{
+  // The chain plus i S, S antisymmetric (the conformal energy's shape), two
+  // ends fixed at complex values
+  typedef std::complex<double> complexd;
+  const int n = 12;
+  Eigen::SparseMatrix<complexd> L = chain(n, 0.).cast<complexd>();
+  for(int i = 0; i + 1 < n; i++) {
+    L.coeffRef(i, i + 1) += complexd(0., 0.3 + 0.01 * i);
+    L.coeffRef(i + 1, i) -= complexd(0., 0.3 + 0.01 * i);
+  }
+  std::vector<char> fixed(n, 0);
+  fixed[0] = fixed[n - 1] = 1;
+  Eigen::MatrixXcd z = Eigen::MatrixXcd::Zero(n, 1);
+  z(0, 0) = complexd(-1., 0.5);
+  z(n - 1, 0) = complexd(2., -1.);
+  Eigen::MatrixXcd zFixed = z;
+  ASSERT_TRUE(dirichletSolve(L, fixed, z).ok());
+  EXPECT_EQ(z(0, 0), zFixed(0, 0));
+  EXPECT_EQ(z(n - 1, 0), zFixed(n - 1, 0));
+  // the free rows of L z vanish
+  Eigen::MatrixXcd r = Eigen::MatrixXcd(L) * z;
+  for(int i = 1; i + 1 < n; i++) EXPECT_LT(std::abs(r(i, 0)), 1e-12);
+  // and i S couples u and v: not the linear solution of the real chain
+  complexd linear =
+    zFixed(0, 0) + (zFixed(n - 1, 0) - zFixed(0, 0)) * (n / 2 / double(n - 1));
+  EXPECT_GT(std::abs(z(n / 2, 0) - linear), 1e-3);
 }
