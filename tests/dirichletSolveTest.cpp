@@ -113,3 +113,22 @@ TEST(dirichletSolve, hermitianMatchesDense)
     zFixed(0, 0) + (zFixed(n - 1, 0) - zFixed(0, 0)) * (n / 2 / double(n - 1));
   EXPECT_GT(std::abs(z(n / 2, 0) - linear), 1e-3);
 }
+
+TEST(dirichletSolve, luAboveTenThousandUnknowns)
+{
+  // The size where the LU changes (UMFPACK): the free rows of L x vanish
+  const int n = 12000;
+  Eigen::SparseMatrix<double> L = chain(n, 1e-4);
+  std::vector<char> fixed(n, 0);
+  fixed[0] = fixed[n - 1] = 1;
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, 2);
+  x(0, 0) = 1.;
+  x(n - 1, 1) = 3.;
+  ASSERT_TRUE(dirichletSolve(L, fixed, x, sparseFactorization::lu).ok());
+  Eigen::MatrixXd r = L * x;
+  EXPECT_LT(r.block(1, 0, n - 2, 2).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(x(0, 0), 1.);
+  EXPECT_EQ(x(n - 1, 1), 3.);
+  EXPECT_GT(x(n / 2, 0), 0.);
+  EXPECT_LE(x(n / 2, 0), 1. + 1e-12); // the maximum principle
+}
