@@ -46,3 +46,10 @@ double opt_mesh_compound_fill_holes(OPT_ARGS_NUM)
   if(action & GMSH_SET) o.fillHoles = (val != 0.);
   return o.fillHoles ? 1. : 0.;
 }
+
+double opt_mesh_compound_repair(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) o.repair = (val != 0.);
+  return o.repair ? 1. : 0.;
+}

@@ -19,9 +19,11 @@ enum class compoundParametrization {
 };
 
 struct reparamOptions {
-  int parametrization = (int)compoundParametrization::meanValue;
+  int parametrization = (int)compoundParametrization::automatic;
   // Mesh.CompoundFillHoles: triangulate inner boundary loops before mapping
   bool fillHoles = true;
+  // Mesh.CompoundRepair: cavity and boundary checks on flipped triangles
+  bool repair = true;
 };
 
 reparamOptions &getReparamOptions();

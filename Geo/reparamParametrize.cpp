@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 #include <unordered_map>
+#include "GEntity.h"
 #include "GModel.h"
 #include "MLine.h"
 #include "MTriangle.h"
@@ -16,14 +17,45 @@
 #include "GmshMessage.h"
 #include "MTriangle.h"
 #include "OS.h"
-#include "barycentricMap.h"
-#include "conformalMap.h"
 #include "discretePatch.h"
-#include "harmonicMap.h"
 #include "holeFilling.h"
-#include "meanValueMap.h"
-#include "spectralConformalMap.h"
+#include "mapChain.h"
 #include "reparamOptions.h"
+
+namespace {
+
+  // "surface 12" from the nodes' classification (the hook only gets the
+  // triangles), else "triangulation (N triangles)"
+  std::string surfaceName(const std::vector<MVertex *> &nodes,
+                          std::size_t numTriangles)
+  {
+    for(MVertex *v : nodes) {
+      GEntity *ge = v->onWhat();
+      if(ge && ge->dim() == 2) return "surface " + std::to_string(ge->tag());
+    }
+    return "triangulation (" + std::to_string(numTriangles) + " triangles)";
+  }
+
+  void logAttempt(const std::string &surface, const mapAttempt &a)
+  {
+    const char *name = compoundParametrizationName(a.map);
+    if(!a.error.ok()) {
+      Msg::Info("Reparam: %s: %s map failed (%s), %.3g s", surface.c_str(),
+                name, a.error.what().c_str(), a.mapTime);
+      return;
+    }
+    std::string repair;
+    if(a.repairTried)
+      repair = ", repair moved " + std::to_string(a.repair.movedNodes) +
+               " nodes in " + std::to_string(a.repair.passes) + " passes";
+    Msg::Info("Reparam: %s: %s map: %lu flipped, %lu folds, %lu degenerate%s "
+              "-> %s (%lu flipped, %lu folds), map %.3g s, checks %.3g s",
+              surface.c_str(), name, a.flipped, a.folds, a.degenerate,
+              repair.c_str(), a.bijective() ? "one-to-one" : "not one-to-one",
+              a.flippedAfter, a.foldsAfter, a.mapTime, a.checkTime);
+  }
+
+} // namespace
 
 int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<MVertex *> &nodes,
@@ -66,7 +98,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     for(int j = 0; j < 3; j++) triangleNodes[3 * t + j] = tris[t][j];
 
   discretePatch patch;
-  reparamError err = makeDiscretePatch(std::move(points), std::move(tris), patch);
+  reparamError err =
+    makeDiscretePatch(std::move(points), std::move(tris), patch);
   double t1 = TimeOfDay();
   if(!err.ok()) {
     std::string where;
@@ -103,8 +136,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     if(!filling.triangles.empty()) {
       std::vector<std::array<int, 3> > all = patch.triangles;
       all.insert(all.end(), filling.triangles.begin(), filling.triangles.end());
-      reparamError fillErr = makeDiscretePatch(patch.points, std::move(all),
-                                               extended);
+      reparamError fillErr =
+        makeDiscretePatch(patch.points, std::move(all), extended);
       if(fillErr.ok()) {
         mapped = &extended;
         filledHoles = filling.filledHoles;
@@ -117,43 +150,61 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   }
   double t2 = TimeOfDay();
 
-  patchMap map;
-  switch((compoundParametrization)choice) {
-  case compoundParametrization::harmonic: map = harmonicMap(*mapped); break;
-  case compoundParametrization::barycentric:
-    map = barycentricMap(*mapped);
-    break;
-  case compoundParametrization::meanValue: map = meanValueMap(*mapped); break;
-  case compoundParametrization::conformal: map = conformalMap(*mapped); break;
-  case compoundParametrization::spectral:
-    map = spectralConformalMap(*mapped);
-    break;
-  default:
-    Msg::Error("Mesh.CompoundParametrization = %d (%s) is not implemented "
-               "yet: use 0 to 5",
+  std::vector<mapStep> steps = mapChain(choice);
+  if(steps.empty()) {
+    Msg::Error("Mesh.CompoundParametrization = %d (%s) is not implemented: "
+               "use 0 to 6",
                choice, compoundParametrizationName(choice));
     nodes.clear();
     return -1;
   }
-  if(!map.error.ok()) {
-    Msg::Error("%s map of triangulation (%lu triangles) failed: %s",
-               compoundParametrizationName(choice), triangles.size(),
-               map.error.what().c_str());
+  checkedMap result = runMapChain(*mapped, steps, getReparamOptions().repair);
+  const std::string surface = surfaceName(nodes, triangles.size());
+  for(const mapAttempt &a : result.attempts) logAttempt(surface, a);
+  if(result.chosen < 0) {
+    Msg::Error("%s map of %s failed: %s", compoundParametrizationName(choice),
+               surface.c_str(), result.map.error.what().c_str());
     nodes.clear();
     return -1;
   }
+  const mapAttempt &chosen = result.attempts[result.chosen];
+  if(!result.bijective) {
+    // Never a folded or flipped map to the planar mesher in automatic mode;
+    // a map chosen by hand is kept for study, with a warning
+    if(choice == (int)compoundParametrization::automatic) {
+      Msg::Error("No one-to-one parametrization of %s: every map of the "
+                 "automatic chain flips or folds",
+                 surface.c_str());
+      nodes.clear();
+      return -1;
+    }
+    Msg::Warning(
+      "%s map of %s is not one-to-one (%lu flipped triangles, %lu "
+      "folds): the mesh may be invalid; Mesh.CompoundParametrization "
+      "= 6 tries the maps in turn",
+      compoundParametrizationName(choice), surface.c_str(), chosen.flippedAfter,
+      chosen.foldsAfter);
+  }
+  else if(chosen.degenerateAfter)
+    Msg::Warning("%s map of %s: %lu triangles have a numerically degenerate "
+                 "image",
+                 compoundParametrizationName(chosen.map), surface.c_str(),
+                 chosen.degenerateAfter);
+  const patchMap &map = result.map;
 
   stl_triangles = std::move(triangleNodes);
   stl_vertices_xyz = patch.points;
   stl_vertices_uv.resize(nodes.size());
   for(std::size_t i = 0; i < nodes.size(); i++)
     stl_vertices_uv[i] = SPoint2(map.uv[2 * i], map.uv[2 * i + 1]);
+  double checkTime = 0.;
+  for(const mapAttempt &a : result.attempts) checkTime += a.checkTime;
   Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
             "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "
-            "%.3g s",
-            compoundParametrizationName(choice), nodes.size(),
+            "%.3g s, checks %.3g s",
+            compoundParametrizationName(chosen.map), nodes.size(),
             triangles.size(), patch.boundaryLoops.size() - 1,
             patch.boundaryLoops.size() == 2 ? "" : "s", filledHoles, t1 - t0,
-            t2 - t1, map.assembleTime, map.solveTime);
+            t2 - t1, map.assembleTime, map.solveTime, checkTime);
   return 1;
 }

@@ -1,5 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <Eigen/Eigenvalues>
 #include "OS.h"
 #include "conformalAssembly.h"
 #include "conformalMap.h"
@@ -47,6 +48,38 @@ std::array<int, 2> farthestBoundaryPair(const discretePatch &patch)
     }
   }
   return best;
+}
+
+std::array<int, 2> principalAxisPins(const discretePatch &patch)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for(const SPoint3 &p : patch.points)
+    mean += Eigen::Vector3d(p.x(), p.y(), p.z());
+  mean /= (double)patch.points.size();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(const SPoint3 &p : patch.points) {
+    Eigen::Vector3d d = Eigen::Vector3d(p.x(), p.y(), p.z()) - mean;
+    covariance += d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance);
+  // eigenvalues in increasing order: the last vector is the longest axis
+  const Eigen::Vector3d axis = eig.eigenvectors().col(2);
+  const std::vector<int> &loop = patch.boundaryLoops[patch.outerLoop];
+  std::array<int, 2> pins{{loop[0], loop[0]}};
+  double lo = 1e300, hi = -1e300;
+  for(int i : loop) {
+    const SPoint3 &p = patch.points[i];
+    double s = axis.dot(Eigen::Vector3d(p.x(), p.y(), p.z()) - mean);
+    if(s < lo) {
+      lo = s;
+      pins[0] = i;
+    }
+    if(s > hi) {
+      hi = s;
+      pins[1] = i;
+    }
+  }
+  return pins;
 }
 
 patchMap conformalMap(const discretePatch &patch, std::array<int, 2> pins)

@@ -16,6 +16,11 @@
 // few double sweeps (each one finds the farthest node from the last one)
 std::array<int, 2> farthestBoundaryPair(const discretePatch &patch);
 
+// The nodes of the outer loop at both ends of the patch's principal axis of
+// inertia (largest spread of its nodes): the pins the paper advises when the
+// farthest pair folds (Sec. 6.4)
+std::array<int, 2> principalAxisPins(const discretePatch &patch);
+
 // Pins pins[0] at (-1, 0) and pins[1] at (1, 0), so that the image has the
 // size of the unit disk the convex maps use. Sparse Cholesky of the coupled
 // (u, v) system with the 4 pinned unknowns eliminated.

@@ -71,33 +71,49 @@ TEST(gmshHook, optionDefaultAndRange)
 {
   double value;
   gmsh::option::getNumber("Mesh.CompoundParametrization", value);
-  EXPECT_EQ(value, 3.);
-  std::vector<std::string> log = logOf([] {
-    gmsh::option::setNumber("Mesh.CompoundParametrization", 9);
-  });
+  EXPECT_EQ(value, 6.);
+  std::vector<std::string> log =
+    logOf([] { gmsh::option::setNumber("Mesh.CompoundParametrization", 9); });
   gmsh::option::getNumber("Mesh.CompoundParametrization", value);
-  EXPECT_EQ(value, 3.);
+  EXPECT_EQ(value, 6.);
   EXPECT_TRUE(contains(log, "must be an integer from 0 to 6"));
   gmsh::option::setNumber("Mesh.CompoundParametrization", 0);
   gmsh::option::getNumber("Mesh.CompoundParametrization", value);
   EXPECT_EQ(value, 0.);
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
 }
 
-TEST(gmshHook, unimplementedMapsFailClearly)
+TEST(gmshHook, automaticMapLogsItsChain)
 {
-  gmshTriangulation t(polarDisk(4, 16));
-  for(int choice : {6}) {
-    gmshParametrization p;
-    std::vector<std::string> log =
-      logOf([&] { p = parametrizeWith(t.triangles, choice); });
-    EXPECT_FALSE(p.ok) << choice;
-    // Gmsh's patch check reads the outputs even after a failure: all empty
-    EXPECT_TRUE(p.uv.empty());
-    EXPECT_TRUE(p.triangles.empty());
-    EXPECT_TRUE(p.nodes.empty());
-    EXPECT_TRUE(contains(log, "is not implemented yet")) << choice;
-  }
+  gmshTriangulation t(hemisphere(6, 24));
+  gmshParametrization p;
+  std::vector<std::string> log =
+    logOf([&] { p = parametrizeWith(t.triangles, 6); });
+  ASSERT_TRUE(p.ok);
+  EXPECT_EQ(p.uv.size(), p.nodes.size());
+  // the first map of the chain is one-to-one on a hemisphere: it is kept
+  EXPECT_TRUE(contains(log, "spectral conformal map: 0 flipped, 0 folds, 0 "
+                            "degenerate -> one-to-one"));
+  EXPECT_TRUE(contains(log, "Reparam: spectral conformal map of"));
+  EXPECT_FALSE(contains(log, "mean value map"));
+}
+
+TEST(gmshHook, mapNotOneToOneIsReportedWhenChosenByHand)
+{
+  // the harmonic map flips on slivers; without repair it is kept (chosen by
+  // hand) with a warning, with repair it is fixed
+  gmshTriangulation t(jitteredGrid(10, 0.95, 2));
+  gmsh::option::setNumber("Mesh.CompoundRepair", 0);
+  gmshParametrization p;
+  std::vector<std::string> log =
+    logOf([&] { p = parametrizeWith(t.triangles, 1); });
+  gmsh::option::setNumber("Mesh.CompoundRepair", 1);
+  EXPECT_TRUE(p.ok);
+  EXPECT_TRUE(contains(log, "is not one-to-one"));
+  log = logOf([&] { p = parametrizeWith(t.triangles, 1); });
+  EXPECT_TRUE(p.ok);
+  EXPECT_FALSE(contains(log, "is not one-to-one ("));
+  EXPECT_TRUE(contains(log, "repair moved"));
 }
 
 TEST(gmshHook, badPatchFailsWithReason)
@@ -158,7 +174,8 @@ TEST(gmshHook, badNodeIsNamedWithItsGmshTag)
       if(v == rim4) v = rim0;
   gmshTriangulation g(t); // node rim4 is now in no triangle: not in the patch
   gmshParametrization p;
-  std::vector<std::string> log = logOf([&] { p = parametrizeWith(g.triangles, 3); });
+  std::vector<std::string> log =
+    logOf([&] { p = parametrizeWith(g.triangles, 3); });
   EXPECT_FALSE(p.ok);
   char expected[64];
   std::snprintf(expected, sizeof(expected), "at node %lu (1, 0, 0)",
@@ -286,8 +303,7 @@ TEST(gmshHook, compoundOfClassifiedPatchesExitsCleanly)
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
   gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
   gmsh::option::setNumber("General.Verbosity", 99);
-  std::vector<std::string> log =
-    logOf([] { gmsh::model::mesh::generate(2); });
+  std::vector<std::string> log = logOf([] { gmsh::model::mesh::generate(2); });
   gmsh::option::setNumber("General.Verbosity", 5);
   // the path of the stock bug was taken, and handled
   EXPECT_TRUE(contains(log, "No curvature for node"));

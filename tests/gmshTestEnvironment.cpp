@@ -49,11 +49,13 @@ gmshTriangulation::~gmshTriangulation()
 gmshParametrization parametrizeWith(const std::vector<MTriangle *> &t,
                                     int choice)
 {
+  double previous;
+  gmsh::option::getNumber("Mesh.CompoundParametrization", previous);
   gmsh::option::setNumber("Mesh.CompoundParametrization", choice);
   gmshParametrization p;
   std::vector<SPoint3> xyz;
   p.ok = computeParametrization(t, p.nodes, p.uv, xyz, p.triangles);
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", previous);
   return p;
 }
 

@@ -6,8 +6,9 @@
 #include "testPatches.h"
 #include "triangleQuality.h"
 
-testTriangulation polarDiskWithHoles(int rings, int sectors,
-                                     const std::vector<std::array<int, 4> > &holes)
+testTriangulation
+polarDiskWithHoles(int rings, int sectors,
+                   const std::vector<std::array<int, 4> > &holes)
 {
   testTriangulation t;
   t.points.push_back(SPoint3(0., 0., 0.));
@@ -19,18 +20,21 @@ testTriangulation polarDiskWithHoles(int rings, int sectors,
     }
   }
   auto id = [&](int i, int j) {
-    return i == 0 ? 0 : 1 + (i - 1) * sectors + ((j % sectors) + sectors) % sectors;
+    return i == 0 ? 0 :
+                    1 + (i - 1) * sectors + ((j % sectors) + sectors) % sectors;
   };
   auto inHole = [&](int i, int j) {
     for(const auto &h : holes)
       if(i >= h[0] && i < h[1] && j >= h[2] && j < h[3]) return true;
     return false;
   };
-  for(int j = 0; j < sectors; j++) t.triangles.push_back({id(0, 0), id(1, j), id(1, j + 1)});
+  for(int j = 0; j < sectors; j++)
+    t.triangles.push_back({id(0, 0), id(1, j), id(1, j + 1)});
   for(int i = 1; i < rings; i++) {
     for(int j = 0; j < sectors; j++) {
       if(inHole(i, j)) continue;
-      int a = id(i, j), b = id(i, j + 1), c = id(i + 1, j), d = id(i + 1, j + 1);
+      int a = id(i, j), b = id(i, j + 1), c = id(i + 1, j),
+          d = id(i + 1, j + 1);
       if((i + j) % 2) {
         t.triangles.push_back({a, c, d});
         t.triangles.push_back({a, d, b});
@@ -132,8 +136,8 @@ double minKappa(const testTriangulation &t)
 {
   double k = 1.;
   for(const auto &tri : t.triangles)
-    k = std::min(k, triangleKappa(t.points[tri[0]], t.points[tri[1]],
-                                  t.points[tri[2]]));
+    k = std::min(
+      k, triangleKappa(t.points[tri[0]], t.points[tri[1]], t.points[tri[2]]));
   return k;
 }
 
@@ -146,7 +150,8 @@ testTriangulation rectangleGrid(int nx, int ny, double lx, double ly)
   auto id = [&](int i, int j) { return j * (nx + 1) + i; };
   for(int j = 0; j < ny; j++) {
     for(int i = 0; i < nx; i++) {
-      int a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
+      int a = id(i, j), b = id(i + 1, j), c = id(i, j + 1),
+          d = id(i + 1, j + 1);
       if((i + j) % 2) {
         t.triangles.push_back({a, b, d});
         t.triangles.push_back({a, d, c});
@@ -163,8 +168,7 @@ testTriangulation rectangleGrid(int nx, int ny, double lx, double ly)
 testTriangulation halfCylinder(int nAround, int nAlong, double length)
 {
   testTriangulation t = rectangleGrid(nAround, nAlong, M_PI, length);
-  for(auto &p : t.points)
-    p = SPoint3(std::cos(p.x()), std::sin(p.x()), p.y());
+  for(auto &p : t.points) p = SPoint3(std::cos(p.x()), std::sin(p.x()), p.y());
   return t;
 }
 
@@ -186,6 +190,17 @@ testTriangulation saddleStrip(int nx, int ny, double length, double amplitude)
   for(auto &p : t.points) {
     double x = p.x() - 0.5 * length, y = p.y() - 0.5;
     p = SPoint3(p.x(), p.y(), amplitude * (x * x - y * y));
+  }
+  return t;
+}
+
+testTriangulation helicoidStrip(int nAround, int nAcross, double turns,
+                                double r1, double r2, double pitch)
+{
+  testTriangulation t = rectangleGrid(nAround, nAcross, 1., 1.);
+  for(auto &p : t.points) {
+    double phi = 2. * M_PI * turns * p.x(), r = r1 + (r2 - r1) * p.y();
+    p = SPoint3(r * std::cos(phi), r * std::sin(phi), pitch * turns * p.x());
   }
   return t;
 }

@@ -26,8 +26,9 @@ testTriangulation polarDisk(int rings, int sectors, double radialExponent = 1.,
 testTriangulation hemisphere(int rings, int sectors);
 
 // polarDisk with the cells of some (ring, sector) index ranges removed
-testTriangulation polarDiskWithHoles(int rings, int sectors,
-                                     const std::vector<std::array<int, 4> > &holes);
+testTriangulation
+polarDiskWithHoles(int rings, int sectors,
+                   const std::vector<std::array<int, 4> > &holes);
 
 // A square grid of n x n cells over [0,1]^2 whose middle column of nodes is
 // pushed to within `gap` of its left neighbours: slivers with kappa ~ gap
@@ -55,6 +56,14 @@ testTriangulation sphericalCap(int rings, int sectors, double angle);
 // rectangleGrid(nx, ny, length, 1) bent to the saddle
 // z = amplitude ((x - length/2)^2 - (y - 1/2)^2): elongated, not developable
 testTriangulation saddleStrip(int nx, int ny, double length, double amplitude);
+
+// A helicoidal ramp: rectangleGrid(nAround, nAcross, 1, 1) mapped to the
+// strip of radii [r1, r2] wound `turns` times around the z axis, rising by
+// `pitch` per turn. Nearly flat for a small pitch: its conformal image is
+// close to an annular sector of 2 pi turns, which overlaps itself beyond one
+// turn (the fold fixture).
+testTriangulation helicoidStrip(int nAround, int nAcross, double turns,
+                                double r1, double r2, double pitch);
 
 discretePatch makePatchOrDie(const testTriangulation &t);
 
