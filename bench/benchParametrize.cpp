@@ -7,8 +7,11 @@
 // 180 deg}), then times computeParametrization() on every patch with each
 // map (default: 3 then 0; stock last, since it can take minutes), the best of
 // 3 runs (1 when a run takes over 10 s). Prints one "triangles ..." line,
-// then one "map M seconds S ok K" line per map, flushed as soon as known, so
-// that a caller's timeout still gets the fast results.
+// then one "map M seconds S ok K flipped F folds G notOneToOne P" line per
+// map, flushed as soon as known, so that a caller's timeout still gets the
+// fast results. Each result is also
+// checked (first run, untimed): flipped uv triangles and boundary folds, and
+// the number of patches with either.
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +27,36 @@
 #include "GModelParametrize.h"
 #include "MTriangle.h"
 #include "OS.h"
+#include "bijectivityCheck.h"
+#include "discretePatch.h"
 #include "gmsh.h"
+
+struct bijectivityCount {
+  std::size_t flipped = 0, folds = 0;
+};
+
+// Flips and folds of a parametrization as Gmsh gets it (any map, also
+// Gmsh's own), with Reparam's exact checks
+static bijectivityCount countNonBijective(const std::vector<SPoint3> &xyz,
+                                          const std::vector<int> &tri,
+                                          const std::vector<SPoint2> &uv)
+{
+  bijectivityCount c;
+  std::vector<std::array<int, 3> > triangles(tri.size() / 3);
+  for(std::size_t t = 0; t < triangles.size(); t++)
+    triangles[t] = {{tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]}};
+  discretePatch patch;
+  if(!makeDiscretePatch(xyz, triangles, patch).ok()) return c;
+  std::vector<double> flat(2 * uv.size());
+  for(std::size_t i = 0; i < uv.size(); i++) {
+    flat[2 * i] = uv[i].x();
+    flat[2 * i + 1] = uv[i].y();
+  }
+  bijectivityReport r = checkBijectivity(patch, flat);
+  c.flipped = r.flippedTriangles.size();
+  c.folds = r.numFolds;
+  return c;
+}
 
 int main(int argc, char **argv)
 {
@@ -39,7 +71,10 @@ int main(int argc, char **argv)
   gmsh::initialize(0, nullptr, false);
   // errors on stderr, and keep going after them like the gmsh executable
   gmsh::option::setNumber("General.Terminal", 1);
-  gmsh::option::setNumber("General.Verbosity", 1);
+  // REPARAM_BENCH_VERBOSITY=5 shows Reparam's per-step log lines
+  const char *verbosity = std::getenv("REPARAM_BENCH_VERBOSITY");
+  gmsh::option::setNumber("General.Verbosity",
+                          verbosity ? std::atoi(verbosity) : 1);
   gmsh::option::setNumber("General.AbortOnError", 0);
   gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
   gmsh::merge(argv[1]);
@@ -75,8 +110,12 @@ int main(int argc, char **argv)
   for(int map : maps) {
     gmsh::option::setNumber("Mesh.CompoundParametrization", map);
     double best = 1e300;
-    int ok = 0;
-    for(int run = 0; run < 3 && (run == 0 || best < 10.); run++) {
+    int ok = 0, notOneToOne = 0;
+    std::size_t flipped = 0, folds = 0;
+    // REPARAM_BENCH_RUNS=1: one run (one log line per step)
+    const char *runsEnv = std::getenv("REPARAM_BENCH_RUNS");
+    const int runs = runsEnv ? std::max(1, std::atoi(runsEnv)) : 3;
+    for(int run = 0; run < runs && (run == 0 || best < 10.); run++) {
       double seconds = 0.;
       ok = 0;
       for(const auto &t : patches) {
@@ -85,12 +124,22 @@ int main(int argc, char **argv)
         std::vector<SPoint3> xyz;
         std::vector<int> tri;
         double start = TimeOfDay();
-        ok += computeParametrization(t, n, uv, xyz, tri) ? 1 : 0;
+        bool done = computeParametrization(t, n, uv, xyz, tri);
         seconds += TimeOfDay() - start;
+        ok += done ? 1 : 0;
+        // the first run also checks the result, outside the timing
+        if(run == 0 && done) {
+          bijectivityCount c = countNonBijective(xyz, tri, uv);
+          flipped += c.flipped;
+          folds += c.folds;
+          notOneToOne += c.flipped || c.folds;
+        }
       }
       best = std::min(best, seconds);
     }
-    std::printf("map %d seconds %.4f ok %d\n", map, best, ok);
+    std::printf("map %d seconds %.4f ok %d flipped %lu folds %lu "
+                "notOneToOne %d\n",
+                map, best, ok, flipped, folds, notOneToOne);
     std::fflush(stdout);
   }
   gmsh::finalize();
