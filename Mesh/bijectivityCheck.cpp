@@ -52,41 +52,46 @@ namespace {
     std::vector<std::pair<int, int> > candidates;
 
     // Quadtree binning: a box with few edges tests all their pairs, a
-    // crowded one is split in 4, so that images crushed into a corner of the
-    // plane stay near linear; depth bounded for coincident nodes
-    void collect(const std::vector<int> &edges, const std::array<double, 4> &b,
-                 int depth)
+    // crowded one is split in 4 at the middle of its edges' extent (clipped
+    // to the cell), so that images crushed into a tiny part of the plane are
+    // split down to their own scale; depth bounded for coincident nodes
+    void collect(const std::vector<int> &edges,
+                 const std::array<double, 4> &cell, int depth)
     {
-      if(edges.size() <= 16 || depth == 24) {
+      if(edges.size() <= 16 || depth == 48) {
         for(std::size_t i = 0; i < edges.size(); i++)
           for(std::size_t j = i + 1; j < edges.size(); j++)
             candidates.emplace_back(std::min(edges[i], edges[j]),
                                     std::max(edges[i], edges[j]));
         return;
       }
-      const double mid[2] = {0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3])};
-      for(int q = 0; q < 4; q++) {
-        std::array<double, 4> child = b;
-        if(q & 1)
-          child[0] = mid[0];
-        else
-          child[2] = mid[0];
-        if(q & 2)
-          child[1] = mid[1];
-        else
-          child[3] = mid[1];
-        std::vector<int> inside;
-        for(int e : edges)
-          if(box[e][0] <= child[2] && box[e][2] >= child[0] &&
-             box[e][1] <= child[3] && box[e][3] >= child[1])
-            inside.push_back(e);
-        // a child with every edge: splitting does not separate them
-        if(inside.size() == edges.size()) {
-          collect(inside, child, 24);
-          return;
+      std::array<double, 4> b = {{1e300, 1e300, -1e300, -1e300}};
+      for(int e : edges)
+        for(int c = 0; c < 2; c++) {
+          b[c] = std::min(b[c], std::max(box[e][c], cell[c]));
+          b[c + 2] = std::max(b[c + 2], std::min(box[e][c + 2], cell[c + 2]));
         }
-        collect(inside, child, depth + 1);
+      const double mid[2] = {0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3])};
+      std::array<double, 4> child[4];
+      std::vector<int> inside[4];
+      bool separates = false;
+      for(int q = 0; q < 4; q++) {
+        child[q] = b;
+        child[q][(q & 1) ? 0 : 2] = mid[0];
+        child[q][(q & 2) ? 1 : 3] = mid[1];
+        for(int e : edges)
+          if(box[e][0] <= child[q][2] && box[e][2] >= child[q][0] &&
+             box[e][1] <= child[q][3] && box[e][3] >= child[q][1])
+            inside[q].push_back(e);
+        if(inside[q].size() < edges.size()) separates = true;
       }
+      // every edge in every quarter (they all pass near the middle):
+      // splitting separates nothing
+      if(!separates) {
+        collect(edges, b, 48);
+        return;
+      }
+      for(int q = 0; q < 4; q++) collect(inside[q], child[q], depth + 1);
     }
   };
 

@@ -14,7 +14,7 @@
 
 enum class sparseFactorization {
   cholesky, // symmetric (Hermitian) positive definite: SimplicialLDLT
-  lu // general, real only: KLU
+  lu // general, real only: KLU, UMFPACK above 10k unknowns
 };
 
 // Each column of x is one right-hand side: on input the rows of the fixed

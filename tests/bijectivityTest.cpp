@@ -86,6 +86,29 @@ TEST(bijectivity, foldsOfBoundaryLoops)
   EXPECT_EQ(countBoundaryFolds(wound, uv), 1u);
 }
 
+TEST(bijectivity, foldsOfALoopMostlyCrushedToAPoint)
+{
+  // 19990 nodes on an arc of radius 1e-9, closed by 10 nodes at radius 1:
+  // no crossing; the quadtree splits the crushed part down to its scale
+  // (binning by the whole extent would test its 2e8 pairs)
+  std::vector<std::array<double, 2> > xy;
+  for(int i = 0; i < 19990; i++) {
+    double t = 1.9 * M_PI * i / 19989.;
+    xy.push_back({{1e-9 * std::cos(t), 1e-9 * std::sin(t)}});
+  }
+  for(int i = 0; i < 10; i++) {
+    double t = 1.9 * M_PI + 0.09 * M_PI * i / 9.;
+    xy.push_back({{std::cos(t), std::sin(t)}});
+  }
+  std::vector<double> uv;
+  discretePatch crushed = loopPatch(xy, uv);
+  EXPECT_EQ(countBoundaryFolds(crushed, uv), 0u);
+  // moving one crushed node across the arc's chord makes it cross
+  uv[2 * 5000] = -uv[2 * 5000];
+  uv[2 * 5000 + 1] = -uv[2 * 5000 + 1];
+  EXPECT_GE(countBoundaryFolds(crushed, uv), 1u);
+}
+
 TEST(bijectivity, identityAndMirrorOfAPlanarPatch)
 {
   testTriangulation t = polarDisk(5, 20);
