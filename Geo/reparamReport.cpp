@@ -1,8 +1,10 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
 // The quality line of a newly meshed discrete face (hook in
-// discreteFace::mesh, patches/0001).
+// discreteFace::mesh, patches/0001): shape of the elements and fidelity to
+// the triangulation the face was parametrized from.
 
+#include <algorithm>
 #include "GFace.h"
 #include "GModel.h"
 #include "MLine.h"
@@ -10,6 +12,8 @@
 // after its prerequisites (it includes none)
 #include "GModelParametrize.h"
 #include "GmshMessage.h"
+#include "OS.h"
+#include "meshFidelity.h"
 #include "reparamOptions.h"
 #include "triangleQuality.h"
 
@@ -17,10 +21,19 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
 {
   int map = getReparamOptions().parametrization;
   kappaStatistics k = computeKappaStatistics(gf->triangles);
+  double t0 = TimeOfDay();
+  meshFidelity f = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
+  double diagonal = f.diagonal > 0. ? f.diagonal : 1.;
+  // The elements are oriented once all faces are meshed (orientMeshGFace,
+  // by a vote of all elements: Geo/reparamOrient.cpp), so that the minority
+  // is what will point against the input normals
+  std::size_t inverted = std::min(f.inverted, f.elements - f.inverted);
   Msg::Info("Reparam: surface %d (%s map): planar mesh %.3g s, %lu "
             "triangles, %lu quadrangles, kappa min %.3f mean %.3f, "
-            "%.1f%% below 0.3",
+            "%.1f%% below 0.3, Hausdorff %.3g%% (mean %.3g%%) of the "
+            "diagonal, %lu inverted (%.3g s)",
             gf->tag(), compoundParametrizationName(map), seconds,
             gf->triangles.size(), gf->quadrangles.size(), k.min, k.mean,
-            100. * k.shareBelow03);
+            100. * k.shareBelow03, 100. * f.hausdorff / diagonal,
+            100. * f.meanDistance / diagonal, inverted, TimeOfDay() - t0);
 }

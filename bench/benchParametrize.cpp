@@ -20,13 +20,12 @@
 #include <string>
 #include <vector>
 #include "GModel.h"
-#include "GModel.h"
 #include "MLine.h"
 #include "MTriangle.h"
 // after its prerequisites (it includes none)
 #include "GModelParametrize.h"
-#include "MTriangle.h"
 #include "OS.h"
+#include "benchModel.h"
 #include "bijectivityCheck.h"
 #include "discretePatch.h"
 #include "gmsh.h"
@@ -68,31 +67,8 @@ int main(int argc, char **argv)
   for(int i = 2; i < argc; i++) maps.push_back(std::atoi(argv[i]));
   if(maps.empty()) maps = {3, 0};
 
-  gmsh::initialize(0, nullptr, false);
-  // errors on stderr, and keep going after them like the gmsh executable
-  gmsh::option::setNumber("General.Terminal", 1);
-  // REPARAM_BENCH_VERBOSITY=5 shows Reparam's per-step log lines
-  const char *verbosity = std::getenv("REPARAM_BENCH_VERBOSITY");
-  gmsh::option::setNumber("General.Verbosity",
-                          verbosity ? std::atoi(verbosity) : 1);
-  gmsh::option::setNumber("General.AbortOnError", 0);
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
-  gmsh::merge(argv[1]);
-  std::vector<std::size_t> tags, nodes;
-  gmsh::model::mesh::getElementsByType(2, tags, nodes);
-  // Mean input edge length: the bench remeshes with it, so that the output
-  // has about as many triangles as the input
-  double edges = 0.;
-  for(auto it = GModel::current()->firstFace();
-      it != GModel::current()->lastFace(); ++it)
-    for(MTriangle *t : (*it)->triangles)
-      for(int j = 0; j < 3; j++)
-        edges += t->getVertex(j)->distance(t->getVertex((j + 1) % 3));
-  double meanEdge = tags.empty() ? 0. : edges / (3. * tags.size());
-
-  double t0 = TimeOfDay();
-  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
-  double classify = TimeOfDay() - t0;
+  // ClassifySurfaces parametrizes its patches: with the quick mean value map
+  classifiedStl stl = loadClassifiedStl(argv[1], 3);
 
   std::vector<std::vector<MTriangle *> > patches;
   std::size_t largest = 0;
@@ -104,7 +80,8 @@ int main(int argc, char **argv)
   }
   std::printf("triangles %lu patches %lu largest %lu classify %.3f "
               "meanEdge %.6g\n",
-              tags.size(), patches.size(), largest, classify, meanEdge);
+              stl.triangles, patches.size(), largest, stl.classifySeconds,
+              stl.meanEdge);
   std::fflush(stdout);
 
   for(int map : maps) {

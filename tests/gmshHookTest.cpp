@@ -14,6 +14,8 @@
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 #include "meanValueMap.h"
+#include "meshFidelity.h"
+#include "reparamOrient.h"
 #include "patchAssembly.h"
 #include "triangleQuality.h"
 
@@ -312,4 +314,40 @@ TEST(gmshHook, compoundOfClassifiedPatchesExitsCleanly)
   std::vector<std::size_t> elements, nodes;
   gmsh::model::mesh::getElementsByType(2, elements, nodes);
   EXPECT_GT(elements.size(), 1000u);
+}
+
+TEST(gmshHook, remeshIsOrientedAlongTheInputByEveryElement)
+{
+  remeshDome(6);
+  GFace *gf = nullptr;
+  for(auto it = GModel::current()->firstFace();
+      it != GModel::current()->lastFace(); ++it)
+    if(!(*it)->stl_triangles.empty()) gf = *it;
+  ASSERT_NE(gf, nullptr);
+  const surfaceMesh input = inputTriangulationOf(gf);
+  meshFidelity f = compareToInput(input, surfaceMeshOf(gf));
+  EXPECT_GT(f.elements, 1000u);
+  EXPECT_EQ(f.inverted, 0u);
+  // on the input to a fraction of the 0.05 size (diagonal 2.2)
+  EXPECT_LT(f.hausdorff, 0.01);
+  EXPECT_LT(f.meanDistance, 1e-3);
+
+  // reversed as a whole: the vote turns it back
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  for(std::size_t i = 0; i < gf->getNumMeshElements(); i++)
+    gf->getMeshElement(i)->reverse();
+  EXPECT_EQ(countInverted(input, surfaceMeshOf(gf)), f.elements);
+  EXPECT_TRUE(reparamOrientMeshedFace(gf));
+  EXPECT_EQ(countInverted(input, surfaceMeshOf(gf)), 0u);
+  // a minority against the input is reported, not hidden
+  for(std::size_t i = 0; i < 3; i++) gf->getMeshElement(i)->reverse();
+  std::vector<std::string> log =
+    logOf([gf] { EXPECT_TRUE(reparamOrientMeshedFace(gf)); });
+  EXPECT_TRUE(contains(log, "3 of its " + std::to_string(f.elements) +
+                              " elements point against the input normals"));
+  EXPECT_EQ(countInverted(input, surfaceMeshOf(gf)), 3u);
+  // Gmsh's own map keeps Gmsh's own orientation
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 0);
+  EXPECT_FALSE(reparamOrientMeshedFace(gf));
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
 }

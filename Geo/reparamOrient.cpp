@@ -1,0 +1,37 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Orientation of the new mesh of a discrete face (hook in orientMeshGFace,
+// patches/0004). Gmsh orients a face's mesh from its first element alone,
+// by the normal of the input triangle under one of its nodes: one crease or
+// one sliver of the input there, or a first element with no interior node
+// whose centroid falls outside a non-convex (u, v) image, and the whole face
+// comes out reversed (skull: 715 of 715 triangles of one face). Every
+// element votes here, against the input triangle closest to its centroid.
+
+#include "GFace.h"
+#include "GmshMessage.h"
+#include "MElement.h"
+#include "meshFidelity.h"
+#include "reparamOptions.h"
+#include "reparamOrient.h"
+
+bool reparamOrientMeshedFace(GFace *gf)
+{
+  // Gmsh's own map keeps Gmsh's own orientation: it is the reference
+  if(getReparamOptions().parametrization ==
+       (int)compoundParametrization::gmsh ||
+     gf->geomType() != GEntity::DiscreteSurface || gf->stl_triangles.empty())
+    return false;
+  const std::size_t elements = gf->getNumMeshElements();
+  std::size_t inverted =
+    countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
+  if(2 * inverted > elements) {
+    for(std::size_t i = 0; i < elements; i++) gf->getMeshElement(i)->reverse();
+    inverted = elements - inverted;
+  }
+  if(inverted)
+    Msg::Warning("Reparam: surface %d: %lu of its %lu elements point against "
+                 "the input normals",
+                 gf->tag(), inverted, elements);
+  return true;
+}

@@ -1,0 +1,181 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <unordered_map>
+#include "GFace.h"
+#include "MQuadrangle.h"
+#include "MTriangle.h"
+#include "SBoundingBox3d.h"
+#include "SVector3.h"
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+
+namespace {
+
+  template <int N, class Element>
+  void addElements(const std::vector<Element *> &elements,
+                   std::unordered_map<const MVertex *, int> &index,
+                   surfaceMesh &mesh, std::vector<std::array<int, N> > &out)
+  {
+    for(Element *e : elements) {
+      std::array<int, N> nodes;
+      for(int j = 0; j < N; j++) {
+        const MVertex *v = e->getVertex(j);
+        auto it = index.insert(std::make_pair(v, (int)mesh.points.size()));
+        if(it.second) mesh.points.push_back(v->point());
+        nodes[j] = it.first->second;
+      }
+      out.push_back(nodes);
+    }
+  }
+
+  SVector3 triangleNormal(const surfaceMesh &m, const std::array<int, 3> &t)
+  {
+    return crossprod(SVector3(m.points[t[0]], m.points[t[1]]),
+                     SVector3(m.points[t[0]], m.points[t[2]]));
+  }
+
+  // the cross product of the diagonals: twice the area vector of the quad
+  SVector3 quadrangleNormal(const surfaceMesh &m, const std::array<int, 4> &q)
+  {
+    return crossprod(SVector3(m.points[q[0]], m.points[q[2]]),
+                     SVector3(m.points[q[1]], m.points[q[3]]));
+  }
+
+  template <int N>
+  SPoint3 centroid(const surfaceMesh &m, const std::array<int, N> &e)
+  {
+    SPoint3 g(0., 0., 0.);
+    for(int j : e) g += m.points[j];
+    return g * (1. / N);
+  }
+
+  // Whether an element points against the input under it: the sum of the
+  // unit normals of the input triangles closest to its centroid and to the
+  // points halfway to its corners. One sample alone would call inverted a
+  // coarse element laid across a ridge of the input (its normal is then
+  // nearly tangent to the input on either side).
+  template <int N>
+  bool pointsAgainst(const surfaceMesh &m, const std::array<int, N> &e,
+                     const SVector3 &normal, const surfaceMesh &input,
+                     const closestTriangleSearch &onInput,
+                     const closestTriangleHit &atCentroid)
+  {
+    auto unitNormal = [&](int t) {
+      SVector3 n = triangleNormal(input, input.triangles[t]);
+      double l = n.norm();
+      return l > 0. ? n * (1. / l) : n;
+    };
+    SPoint3 g = centroid<N>(m, e);
+    SVector3 sum = unitNormal(atCentroid.triangle);
+    for(int j : e) {
+      SPoint3 half = (g + m.points[j]) * 0.5;
+      sum += unitNormal(onInput.closest(half).triangle);
+    }
+    return dot(normal, sum) < 0.;
+  }
+
+  struct oneSided {
+    double max = 0., sum = 0.;
+    std::size_t samples = 0;
+    void add(double d)
+    {
+      max = std::max(max, d);
+      sum += d;
+      samples++;
+    }
+  };
+
+  // distances from the nodes and element centroids of `from` to `to`, and
+  // the elements of `from` whose normal points against the closest triangle
+  // of `to` (normals: of the triangles of `to`)
+  oneSided distances(const surfaceMesh &from, const surfaceMesh &to,
+                     const closestTriangleSearch &search,
+                     std::size_t *inverted = nullptr)
+  {
+    oneSided s;
+    for(const SPoint3 &p : from.points) s.add(search.closest(p).distance);
+    for(const auto &t : from.triangles) {
+      closestTriangleHit hit = search.closest(centroid<3>(from, t));
+      s.add(hit.distance);
+      if(inverted)
+        *inverted +=
+          pointsAgainst<3>(from, t, triangleNormal(from, t), to, search, hit);
+    }
+    for(const auto &q : from.quadrangles) {
+      closestTriangleHit hit = search.closest(centroid<4>(from, q));
+      s.add(hit.distance);
+      if(inverted)
+        *inverted +=
+          pointsAgainst<4>(from, q, quadrangleNormal(from, q), to, search, hit);
+    }
+    return s;
+  }
+
+} // namespace
+
+surfaceMesh surfaceMeshOf(const GFace *gf)
+{
+  surfaceMesh m;
+  std::unordered_map<const MVertex *, int> index;
+  GFace *f = const_cast<GFace *>(gf);
+  addElements<3>(f->triangles, index, m, m.triangles);
+  addElements<4>(f->quadrangles, index, m, m.quadrangles);
+  return m;
+}
+
+surfaceMesh inputTriangulationOf(const GFace *gf)
+{
+  surfaceMesh m;
+  m.points = gf->stl_vertices_xyz;
+  const std::vector<int> &t = gf->stl_triangles;
+  m.triangles.resize(t.size() / 3);
+  for(std::size_t i = 0; i < m.triangles.size(); i++)
+    m.triangles[i] = {{t[3 * i], t[3 * i + 1], t[3 * i + 2]}};
+  return m;
+}
+
+meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output)
+{
+  meshFidelity f;
+  f.elements = output.numElements();
+  SBoundingBox3d box;
+  for(const SPoint3 &p : input.points) box += p;
+  if(!input.points.empty()) f.diagonal = box.diag();
+  if(input.triangles.empty() || !f.elements) return f;
+
+  closestTriangleSearch onInput(input.points, input.triangles);
+  oneSided there = distances(output, input, onInput, &f.inverted);
+  // the output as triangles for the search from the input side
+  std::vector<std::array<int, 3> > outputTriangles = output.triangles;
+  for(const auto &q : output.quadrangles) {
+    outputTriangles.push_back({{q[0], q[1], q[2]}});
+    outputTriangles.push_back({{q[0], q[2], q[3]}});
+  }
+  surfaceMesh outputAsTriangles;
+  outputAsTriangles.points = output.points;
+  outputAsTriangles.triangles = std::move(outputTriangles);
+  closestTriangleSearch onOutput(outputAsTriangles.points,
+                                 outputAsTriangles.triangles);
+  oneSided back = distances(input, outputAsTriangles, onOutput);
+  f.hausdorff = std::max(there.max, back.max);
+  f.meanDistance = 0.5 * (there.sum / std::max<std::size_t>(1, there.samples) +
+                          back.sum / std::max<std::size_t>(1, back.samples));
+  return f;
+}
+
+std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output)
+{
+  if(input.triangles.empty()) return 0;
+  closestTriangleSearch onInput(input.points, input.triangles);
+  std::size_t inverted = 0;
+  for(const auto &t : output.triangles)
+    inverted +=
+      pointsAgainst<3>(output, t, triangleNormal(output, t), input, onInput,
+                       onInput.closest(centroid<3>(output, t)));
+  for(const auto &q : output.quadrangles)
+    inverted +=
+      pointsAgainst<4>(output, q, quadrangleNormal(output, q), input, onInput,
+                       onInput.closest(centroid<4>(output, q)));
+  return inverted;
+}

@@ -1,0 +1,51 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// How faithful a new surface mesh is to the triangulation it was made from:
+// two-sided distances (sampled Hausdorff and mean) and the elements whose
+// orientation disagrees with the input normals (SPEC.md sec. 5).
+
+#ifndef MESH_FIDELITY_H
+#define MESH_FIDELITY_H
+
+#include <array>
+#include <vector>
+#include "SPoint3.h"
+
+class GFace;
+
+struct surfaceMesh {
+  std::vector<SPoint3> points;
+  std::vector<std::array<int, 3> > triangles;
+  std::vector<std::array<int, 4> > quadrangles;
+  std::size_t numElements() const
+  {
+    return triangles.size() + quadrangles.size();
+  }
+};
+
+// The triangles and quadrangles of a meshed face
+surfaceMesh surfaceMeshOf(const GFace *gf);
+
+// The input triangulation a discrete face was parametrized from (Gmsh keeps
+// it in GFace::stl_vertices_xyz / stl_triangles)
+surfaceMesh inputTriangulationOf(const GFace *gf);
+
+struct meshFidelity {
+  std::size_t elements = 0;
+  // elements whose normal points against the input under them: the sum of
+  // the unit normals of the input triangles closest to their centroid and to
+  // the points halfway from it to their corners
+  std::size_t inverted = 0;
+  // two-sided distances over samples (nodes and element centroids of both
+  // meshes), absolute; diagonal of the input's bounding box to relate them
+  double hausdorff = 0., meanDistance = 0., diagonal = 0.;
+};
+
+meshFidelity compareToInput(const surfaceMesh &input,
+                            const surfaceMesh &output);
+
+// Only meshFidelity::inverted (N + 1 closest-triangle searches per element
+// of N corners)
+std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output);
+
+#endif

@@ -1,0 +1,107 @@
+// Reparam - the whole STL recipe on one mesh, with one map and one planar
+// mesher, and the quality and fidelity of the result.
+//
+//   reparamBenchRemesh file.stl map [algorithm [sizeFactor]]
+//
+// Merge, ClassifySurfaces{40 deg, 1, 1, 180 deg} and CreateGeometry with
+// Mesh.CompoundParametrization = map, then Mesh 2 with Mesh.Algorithm =
+// algorithm (default 6) at a uniform size of sizeFactor (default 1) times
+// the input's mean edge length. Prints one line:
+//
+//   remesh map M algorithm A geometry S mesh S faces F meshed K triangles T
+//   quadrangles Q inverted I hausdorff H mean D kappaMin K kappaMean K
+//   below03 P fidelity S
+//
+// geometry: CreateGeometry (the parametrizations), mesh: Mesh 2; faces: the
+// discrete faces with a parametrization, meshed: those that got elements;
+// inverted: elements (after Gmsh orients them) whose normal points against
+// the input triangle closest to their centroid; hausdorff and mean: largest
+// and element-weighted mean two-sided distance of a face to its input, in %
+// of the input's bounding-box diagonal; kappa over all triangles.
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+#include "GFace.h"
+#include "GModel.h"
+#include "MTriangle.h"
+#include "OS.h"
+#include "SBoundingBox3d.h"
+#include "benchModel.h"
+#include "gmsh.h"
+#include "meshFidelity.h"
+#include "triangleQuality.h"
+
+int main(int argc, char **argv)
+{
+  if(argc < 3) {
+    std::fprintf(stderr, "usage: %s file.stl map [algorithm [sizeFactor]]\n",
+                 argv[0]);
+    return 2;
+  }
+  const int map = std::atoi(argv[2]);
+  const int algorithm = argc > 3 ? std::atoi(argv[3]) : 6;
+  const double sizeFactor = argc > 4 ? std::atof(argv[4]) : 1.;
+
+  classifiedStl stl = loadClassifiedStl(argv[1], map);
+  double t0 = TimeOfDay();
+  try {
+    gmsh::model::mesh::createGeometry();
+  } catch(...) {
+  }
+  double geometry = TimeOfDay() - t0;
+
+  const double size = sizeFactor * stl.meanEdge;
+  gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  gmsh::option::setNumber("Mesh.Algorithm", algorithm);
+  t0 = TimeOfDay();
+  try {
+    gmsh::model::mesh::generate(2);
+  } catch(...) {
+  }
+  double mesh = TimeOfDay() - t0;
+
+  t0 = TimeOfDay();
+  SBoundingBox3d box;
+  std::vector<MTriangle *> triangles;
+  std::size_t faces = 0, meshed = 0, quadrangles = 0, inverted = 0;
+  double hausdorff = 0., weightedMean = 0.;
+  std::size_t weight = 0;
+  for(auto it = GModel::current()->firstFace();
+      it != GModel::current()->lastFace(); ++it) {
+    GFace *gf = *it;
+    if(gf->stl_triangles.empty()) continue;
+    faces++;
+    for(const SPoint3 &p : gf->stl_vertices_xyz) box += p;
+    if(gf->triangles.empty() && gf->quadrangles.empty()) continue;
+    meshed++;
+    triangles.insert(triangles.end(), gf->triangles.begin(),
+                     gf->triangles.end());
+    quadrangles += gf->quadrangles.size();
+    meshFidelity f =
+      compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
+    inverted += f.inverted;
+    if(f.inverted && std::getenv("REPARAM_BENCH_FACES"))
+      std::printf("face %d elements %lu inverted %lu input %lu\n", gf->tag(),
+                  f.elements, f.inverted, gf->stl_triangles.size() / 3);
+    hausdorff = std::max(hausdorff, f.hausdorff);
+    weightedMean += f.meanDistance * f.elements;
+    weight += f.elements;
+  }
+  double diagonal = faces ? box.diag() : 1.;
+  kappaStatistics k = computeKappaStatistics(triangles);
+  double fidelity = TimeOfDay() - t0;
+
+  std::printf("remesh map %d algorithm %d geometry %.3f mesh %.3f faces %lu "
+              "meshed %lu triangles %lu quadrangles %lu inverted %lu "
+              "hausdorff %.4g mean %.4g kappaMin %.4f kappaMean %.4f below03 "
+              "%.4f fidelity %.3f\n",
+              map, algorithm, geometry, mesh, faces, meshed, triangles.size(),
+              quadrangles, inverted, 100. * hausdorff / diagonal,
+              weight ? 100. * weightedMean / weight / diagonal : 0., k.min,
+              k.mean, k.shareBelow03, fidelity);
+  gmsh::finalize();
+  return 0;
+}

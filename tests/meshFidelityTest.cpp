@@ -1,0 +1,129 @@
+// Reparam - closest-triangle search and the fidelity of a new mesh to its
+// input: distances and orientation
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+#include "testPatches.h"
+
+namespace {
+
+  surfaceMesh asSurfaceMesh(const testTriangulation &t)
+  {
+    surfaceMesh m;
+    m.points = t.points;
+    m.triangles = t.triangles;
+    return m;
+  }
+
+  double bruteForceDistance(const testTriangulation &t, const SPoint3 &p)
+  {
+    double best = 1e300;
+    for(const auto &tri : t.triangles)
+      best = std::min(
+        best, p.distance(closestPointOnTriangle(
+                p, t.points[tri[0]], t.points[tri[1]], t.points[tri[2]])));
+    return best;
+  }
+
+  // a fixed linear congruential sequence in [0, 1)
+  struct sequence {
+    unsigned state;
+    double next()
+    {
+      state = state * 1664525u + 1013904223u;
+      return (state >> 8) / 16777216.;
+    }
+  };
+
+} // namespace
+
+TEST(closestTriangle, pointOnTriangleByRegion)
+{
+  SPoint3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+  // above the face: its projection
+  SPoint3 q = closestPointOnTriangle(SPoint3(0.5, 0.5, 3), a, b, c);
+  EXPECT_NEAR(q.distance(SPoint3(0.5, 0.5, 0)), 0., 1e-15);
+  // beyond a vertex, beyond an edge, beyond the hypotenuse
+  q = closestPointOnTriangle(SPoint3(-1, -1, 1), a, b, c);
+  EXPECT_NEAR(q.distance(a), 0., 1e-15);
+  q = closestPointOnTriangle(SPoint3(1, -3, -1), a, b, c);
+  EXPECT_NEAR(q.distance(SPoint3(1, 0, 0)), 0., 1e-15);
+  q = closestPointOnTriangle(SPoint3(2, 2, 0), a, b, c);
+  EXPECT_NEAR(q.distance(SPoint3(1, 1, 0)), 0., 1e-15);
+  // a degenerate (collinear) triangle is its longest edge
+  q = closestPointOnTriangle(SPoint3(3, 1, 0), a, SPoint3(1, 0, 0),
+                             SPoint3(4, 0, 0));
+  EXPECT_NEAR(q.distance(SPoint3(3, 0, 0)), 0., 1e-15);
+  q = closestPointOnTriangle(SPoint3(5, 0, 1), a, a, SPoint3(4, 0, 0));
+  EXPECT_NEAR(q.distance(SPoint3(4, 0, 0)), 0., 1e-15);
+}
+
+TEST(closestTriangle, searchEqualsBruteForce)
+{
+  // a hemisphere plus one huge triangle (subdivided for the samples) and a
+  // sliver: the search must stay exact everywhere
+  testTriangulation t = hemisphere(12, 40);
+  int n = (int)t.points.size();
+  t.points.push_back(SPoint3(-30, -30, -2));
+  t.points.push_back(SPoint3(30, -30, -2));
+  t.points.push_back(SPoint3(0, 30, -2));
+  t.points.push_back(SPoint3(3, 0, 0));
+  t.triangles.push_back({{n, n + 1, n + 2}});
+  t.triangles.push_back({{n + 3, 0, n + 3}});
+  closestTriangleSearch search(t.points, t.triangles);
+  EXPECT_GT(search.numSamples(), t.triangles.size());
+  sequence s{7};
+  for(int i = 0; i < 3000; i++) {
+    SPoint3 p(8 * s.next() - 4, 8 * s.next() - 4, 6 * s.next() - 3);
+    closestTriangleHit hit = search.closest(p);
+    ASSERT_GE(hit.triangle, 0);
+    EXPECT_NEAR(hit.distance, bruteForceDistance(t, p), 1e-13) << i;
+    EXPECT_NEAR(hit.point.distance(p), hit.distance, 1e-13);
+  }
+}
+
+TEST(meshFidelity, sameMeshIsFaithfulAndReversedIsInverted)
+{
+  surfaceMesh input = asSurfaceMesh(hemisphere(8, 24));
+  meshFidelity f = compareToInput(input, input);
+  EXPECT_EQ(f.elements, input.triangles.size());
+  EXPECT_EQ(f.inverted, 0u);
+  EXPECT_NEAR(f.hausdorff, 0., 1e-14);
+  EXPECT_NEAR(f.diagonal, std::sqrt(2. * 2. * 2. + 1.), 1e-12);
+
+  surfaceMesh reversed = input;
+  for(auto &t : reversed.triangles) std::swap(t[1], t[2]);
+  EXPECT_EQ(compareToInput(input, reversed).inverted, input.triangles.size());
+}
+
+TEST(meshFidelity, distancesOfAnOffsetPlaneAndOfQuadrangles)
+{
+  surfaceMesh input = asSurfaceMesh(rectangleGrid(10, 10, 1, 1));
+  // a 4 x 4 quadrangle mesh of the same square, 0.01 above it
+  surfaceMesh quads;
+  for(int j = 0; j <= 4; j++)
+    for(int i = 0; i <= 4; i++)
+      quads.points.push_back(SPoint3(i / 4., j / 4., 0.01));
+  for(int j = 0; j < 4; j++)
+    for(int i = 0; i < 4; i++) {
+      int a = 5 * j + i;
+      quads.quadrangles.push_back({{a, a + 1, a + 6, a + 5}});
+    }
+  meshFidelity f = compareToInput(input, quads);
+  EXPECT_EQ(f.elements, 16u);
+  EXPECT_EQ(f.inverted, 0u);
+  EXPECT_NEAR(f.hausdorff, 0.01, 1e-14);
+  EXPECT_NEAR(f.meanDistance, 0.01, 1e-14);
+  // one quadrangle numbered clockwise
+  std::swap(quads.quadrangles[5][1], quads.quadrangles[5][3]);
+  EXPECT_EQ(compareToInput(input, quads).inverted, 1u);
+
+  // an output covering only the lower half: the input's upper half is up to
+  // 0.5 away (sampled at its nodes), the output everywhere on the input
+  surfaceMesh half = asSurfaceMesh(rectangleGrid(10, 5, 1, 0.5));
+  f = compareToInput(input, half);
+  EXPECT_NEAR(f.hausdorff, 0.5, 1e-14);
+  EXPECT_EQ(f.inverted, 0u);
+}
