@@ -5,6 +5,8 @@
 // the triangulation the face was parametrized from.
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 #include "GFace.h"
 #include "GModel.h"
 #include "MLine.h"
@@ -15,12 +17,12 @@
 #include "OS.h"
 #include "meshFidelity.h"
 #include "reparamOptions.h"
-#include "triangleQuality.h"
+#include "faceQuality.h"
 
 void reparamReportMeshedFace(GFace *gf, double seconds)
 {
   int map = getReparamOptions().parametrization;
-  kappaStatistics k = computeKappaStatistics(gf->triangles);
+  faceQuality q = computeFaceQuality({gf});
   double t0 = TimeOfDay();
   meshFidelity f = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
   double diagonal = f.diagonal > 0. ? f.diagonal : 1.;
@@ -28,12 +30,18 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
   // by a vote of all elements: Geo/reparamOrient.cpp), so that the minority
   // is what will point against the input normals
   std::size_t inverted = std::min(f.inverted, f.elements - f.inverted);
+  std::string eta;
+  if(q.quadrangles) {
+    char s[64];
+    snprintf(s, sizeof(s), ", eta min %.3f mean %.3f", q.etaMin, q.etaMean);
+    eta = s;
+  }
   Msg::Info("Reparam: surface %d (%s map): planar mesh %.3g s, %lu "
             "triangles, %lu quadrangles, kappa min %.3f mean %.3f, "
-            "%.1f%% below 0.3, Hausdorff %.3g%% (mean %.3g%%) of the "
-            "diagonal, %lu inverted (%.3g s)",
-            gf->tag(), compoundParametrizationName(map), seconds,
-            gf->triangles.size(), gf->quadrangles.size(), k.min, k.mean,
-            100. * k.shareBelow03, 100. * f.hausdorff / diagonal,
+            "%.1f%% below 0.3%s, tau %.1f%%, Hausdorff %.3g%% (mean %.3g%%) "
+            "of the diagonal, %lu inverted (%.3g s)",
+            gf->tag(), compoundParametrizationName(map), seconds, q.triangles,
+            q.quadrangles, q.kappaMin, q.kappaMean, 100. * q.kappaShareBelow03,
+            eta.c_str(), q.tau, 100. * f.hausdorff / diagonal,
             100. * f.meanDistance / diagonal, inverted, TimeOfDay() - t0);
 }

@@ -10,14 +10,15 @@
 //
 //   remesh map M algorithm A geometry S mesh S faces F meshed K triangles T
 //   quadrangles Q inverted I hausdorff H mean D kappaMin K kappaMean K
-//   below03 P fidelity S
+//   below03 P etaMin E etaMean E tau T fidelity S
 //
 // geometry: CreateGeometry (the parametrizations), mesh: Mesh 2; faces: the
 // discrete faces with a parametrization, meshed: those that got elements;
 // inverted: elements (after Gmsh orients them) whose normal points against
 // the input triangle closest to their centroid; hausdorff and mean: largest
 // and element-weighted mean two-sided distance of a face to its input, in %
-// of the input's bounding-box diagonal; kappa over all triangles.
+// of the input's bounding-box diagonal; kappa over all triangles, eta over
+// all quadrangles, tau (%) over all edges.
 
 #include <algorithm>
 #include <cstdio>
@@ -31,7 +32,7 @@
 #include "benchModel.h"
 #include "gmsh.h"
 #include "meshFidelity.h"
-#include "triangleQuality.h"
+#include "faceQuality.h"
 
 int main(int argc, char **argv)
 {
@@ -65,8 +66,8 @@ int main(int argc, char **argv)
 
   t0 = TimeOfDay();
   SBoundingBox3d box;
-  std::vector<MTriangle *> triangles;
-  std::size_t faces = 0, meshed = 0, quadrangles = 0, inverted = 0;
+  std::vector<GFace *> meshedFaces;
+  std::size_t faces = 0, meshed = 0, inverted = 0;
   double hausdorff = 0., weightedMean = 0.;
   std::size_t weight = 0;
   for(auto it = GModel::current()->firstFace();
@@ -77,9 +78,7 @@ int main(int argc, char **argv)
     for(const SPoint3 &p : gf->stl_vertices_xyz) box += p;
     if(gf->triangles.empty() && gf->quadrangles.empty()) continue;
     meshed++;
-    triangles.insert(triangles.end(), gf->triangles.begin(),
-                     gf->triangles.end());
-    quadrangles += gf->quadrangles.size();
+    meshedFaces.push_back(gf);
     meshFidelity f =
       compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
     inverted += f.inverted;
@@ -91,17 +90,18 @@ int main(int argc, char **argv)
     weight += f.elements;
   }
   double diagonal = faces ? box.diag() : 1.;
-  kappaStatistics k = computeKappaStatistics(triangles);
+  faceQuality q = computeFaceQuality(meshedFaces);
   double fidelity = TimeOfDay() - t0;
 
   std::printf("remesh map %d algorithm %d geometry %.3f mesh %.3f faces %lu "
               "meshed %lu triangles %lu quadrangles %lu inverted %lu "
               "hausdorff %.4g mean %.4g kappaMin %.4f kappaMean %.4f below03 "
-              "%.4f fidelity %.3f\n",
-              map, algorithm, geometry, mesh, faces, meshed, triangles.size(),
-              quadrangles, inverted, 100. * hausdorff / diagonal,
-              weight ? 100. * weightedMean / weight / diagonal : 0., k.min,
-              k.mean, k.shareBelow03, fidelity);
+              "%.4f etaMin %.4f etaMean %.4f tau %.2f fidelity %.3f\n",
+              map, algorithm, geometry, mesh, faces, meshed, q.triangles,
+              q.quadrangles, inverted, 100. * hausdorff / diagonal,
+              weight ? 100. * weightedMean / weight / diagonal : 0., q.kappaMin,
+              q.kappaMean, q.kappaShareBelow03, q.etaMin, q.etaMean, q.tau,
+              fidelity);
   gmsh::finalize();
   return 0;
 }

@@ -1,0 +1,23 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <cmath>
+#include "SVector3.h"
+#include "quadQuality.h"
+
+double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
+               const SPoint3 &p3)
+{
+  const SPoint3 *p[4] = {&p0, &p1, &p2, &p3};
+  SVector3 normal = crossprod(SVector3(p0, p2), SVector3(p1, p3));
+  double worst = 0.;
+  for(int k = 0; k < 4; k++) {
+    SVector3 next(*p[k], *p[(k + 1) % 4]), previous(*p[k], *p[(k + 3) % 4]);
+    SVector3 turn = crossprod(next, previous);
+    // a corner turning against the quad's normal is reflex
+    if(dot(turn, normal) <= 0.) return 0.;
+    double alpha = std::atan2(turn.norm(), dot(next, previous));
+    worst = std::max(worst, std::fabs(M_PI / 2. - alpha));
+  }
+  return std::max(1. - 2. / M_PI * worst, 0.);
+}
