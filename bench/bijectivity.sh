@@ -21,13 +21,8 @@ timeout=${REPARAM_BENCH_TIMEOUT:-300}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
-  meshes=("$here"/tutorials/*.stl)
-  data=$here/../shared/data/meshes
-  [ -d "$data" ] && meshes+=($(ls -S -r "$data"/*.stl))
-fi
+source "$here/bench/common.sh"
+benchMeshes "$@"
 
 printf '| mesh | patches | ended on spectral / LSCM re-pinned / mean value / failed | flips found | folds found | flips left after repair | parametrization (s) | maps (s) | checks + repairs (s) | checks share | not one-to-one: ours / Gmsh |\n'
 printf '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n'

@@ -20,14 +20,12 @@ timeout=${REPARAM_BENCH_TIMEOUT:-300}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
+source "$here/bench/common.sh"
+if [ $# -eq 0 ]; then
   python3 "$here/bench/make-large-patch.py" "$tmp/bumpy_square_100k.stl" 100000
-  meshes=("$tmp/bumpy_square_100k.stl" "$here"/tutorials/*.stl)
-  data=$here/../shared/data/meshes
-  [ -d "$data" ] && meshes+=($(ls -S -r "$data"/*.stl))
+  BENCH_EXTRA_MESHES=("$tmp/bumpy_square_100k.stl")
 fi
+benchMeshes "$@"
 
 printf '| mesh | tri in | patches (largest) | stock (s) | harmonic (s) | Tutte (s) | mean value (s) | LSCM (s) | spectral (s) | stock / harmonic | stock / Tutte | stock / mean value | stock / LSCM | stock / spectral | failed stock / ours |\n'
 printf '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n'

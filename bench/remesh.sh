@@ -21,13 +21,8 @@ timeout=${REPARAM_BENCH_TIMEOUT:-120}
 algorithm=${REPARAM_BENCH_ALGORITHM:-6}
 [ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
 
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
-  meshes=("$here"/tutorials/*.stl)
-  data=$here/../shared/data/meshes
-  [ -d "$data" ] && meshes+=($(ls -S -r "$data"/*.stl))
-fi
+source "$here/bench/common.sh"
+benchMeshes "$@"
 
 printf '| mesh | map | faces meshed | CreateGeometry (s) | Mesh 2 (s) | triangles | kappa min | kappa mean | inverted | Hausdorff (%%) | mean distance (%%) |\n'
 printf '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n'

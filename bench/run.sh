@@ -18,13 +18,8 @@ bench=$build/bench/reparamBenchParametrize
 timeout=${REPARAM_BENCH_TIMEOUT:-300}
 [ -x "$gmsh" ] && [ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
 
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
-  meshes=("$here"/tutorials/*.stl)
-  data=$here/../shared/data/meshes
-  [ -d "$data" ] && meshes+=($(ls -S -r "$data"/*.stl))
-fi
+source "$here/bench/common.sh"
+benchMeshes "$@"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 

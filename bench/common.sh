@@ -1,0 +1,15 @@
+# Sourced by the bench scripts. benchMeshes FILE... sets `meshes` to the
+# given files, or by default to the tutorials' STL files and every mesh of
+# ../shared/data/meshes (when present), smallest first; BENCH_EXTRA_MESHES
+# (an array, if set) goes first in the default list.
+benchMeshes() {
+  if [ $# -gt 0 ]; then
+    meshes=("$@")
+    return
+  fi
+  local here data
+  here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  meshes=(${BENCH_EXTRA_MESHES[@]+"${BENCH_EXTRA_MESHES[@]}"} "$here"/tutorials/*.stl)
+  data=$here/../shared/data/meshes
+  [ -d "$data" ] && meshes+=($(ls -S -r "$data"/*.stl))
+}
