@@ -6,7 +6,7 @@
 // one sliver of the input there, or a first element with no interior node
 // whose centroid falls outside a non-convex (u, v) image, and the whole face
 // comes out reversed (skull: 715 of 715 triangles of one face). Every
-// element votes here, against the input triangle closest to its centroid.
+// element votes here, against the input under it (meshFidelity::inverted).
 
 #include "GFace.h"
 #include "GmshMessage.h"

@@ -14,8 +14,8 @@
 //
 // geometry: CreateGeometry (the parametrizations), mesh: Mesh 2; faces: the
 // discrete faces with a parametrization, meshed: those that got elements;
-// inverted: elements (after Gmsh orients them) whose normal points against
-// the input triangle closest to their centroid; hausdorff and mean: largest
+// inverted: elements (after Gmsh orients them) pointing against the input
+// under them (meshFidelity::inverted); hausdorff and mean: largest
 // and element-weighted mean two-sided distance of a face to its input, in %
 // of the input's bounding-box diagonal; kappa over all triangles, eta over
 // all quadrangles, tau (%) over all edges.

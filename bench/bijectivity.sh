@@ -14,14 +14,12 @@
 # Gmsh's own map (checked with the same exact predicates).
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-build=${REPARAM_BUILD_DIR:-$here/build}
-bench=$build/bench/reparamBenchParametrize
+source "$here/bench/common.sh"
+benchProgram reparamBenchParametrize
 timeout=${REPARAM_BENCH_TIMEOUT:-300}
-[ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-source "$here/bench/common.sh"
 benchMeshes "$@"
 
 printf '| mesh | patches | ended on spectral / LSCM re-pinned / mean value / failed | flips found | folds found | flips left after repair | parametrization (s) | maps (s) | checks + repairs (s) | checks share | not one-to-one: ours / Gmsh |\n'

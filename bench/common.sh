@@ -13,3 +13,11 @@ benchMeshes() {
   data=$here/../shared/data/meshes
   [ -d "$data" ] && meshes+=($(ls -S -r "$data"/*.stl))
 }
+
+# benchProgram NAME sets `build` (REPARAM_BUILD_DIR, default build/) and
+# `bench` to the benchmark program NAME in it, and stops if it is not built.
+benchProgram() {
+  build=${REPARAM_BUILD_DIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build}
+  bench=$build/bench/$1
+  [ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
+}

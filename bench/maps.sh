@@ -13,14 +13,12 @@
 # the "failed" column (as for stock: the patches the split leaves pinched).
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-build=${REPARAM_BUILD_DIR:-$here/build}
-bench=$build/bench/reparamBenchParametrize
+source "$here/bench/common.sh"
+benchProgram reparamBenchParametrize
 timeout=${REPARAM_BENCH_TIMEOUT:-300}
-[ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-source "$here/bench/common.sh"
 if [ $# -eq 0 ]; then
   python3 "$here/bench/make-large-patch.py" "$tmp/bumpy_square_100k.stl" 100000
   BENCH_EXTRA_MESHES=("$tmp/bumpy_square_100k.stl")

@@ -10,18 +10,16 @@
 #
 # Per mesh and map: faces meshed / parametrized, CreateGeometry and Mesh 2
 # times, triangles, kappa min and mean, elements pointing against the input
-# normals (input triangle closest to their centroid, after Gmsh orients the
-# mesh), two-sided Hausdorff and mean distance to the input in % of its
+# normals (input triangles closest to their centroid and to the points
+# halfway to their corners, after Gmsh orients the mesh), two-sided Hausdorff and mean distance to the input in % of its
 # bounding-box diagonal.
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-build=${REPARAM_BUILD_DIR:-$here/build}
-bench=$build/bench/reparamBenchRemesh
+source "$here/bench/common.sh"
+benchProgram reparamBenchRemesh
 timeout=${REPARAM_BENCH_TIMEOUT:-120}
 algorithm=${REPARAM_BENCH_ALGORITHM:-6}
-[ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
 
-source "$here/bench/common.sh"
 benchMeshes "$@"
 
 printf '| mesh | map | faces meshed | CreateGeometry (s) | Mesh 2 (s) | triangles | kappa min | kappa mean | inverted | Hausdorff (%%) | mean distance (%%) |\n'

@@ -12,13 +12,11 @@
 # as a gmsh process for each map: wall time, triangles out, errors.
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-build=${REPARAM_BUILD_DIR:-$here/build}
-gmsh=$build/gmsh/gmsh
-bench=$build/bench/reparamBenchParametrize
-timeout=${REPARAM_BENCH_TIMEOUT:-300}
-[ -x "$gmsh" ] && [ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
-
 source "$here/bench/common.sh"
+benchProgram reparamBenchParametrize
+gmsh=$build/gmsh/gmsh
+[ -x "$gmsh" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
+timeout=${REPARAM_BENCH_TIMEOUT:-300}
 benchMeshes "$@"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

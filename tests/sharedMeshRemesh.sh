@@ -2,7 +2,8 @@
 # CTest: the STL recipe with the automatic chain (Mesh.CompoundParametrization
 # = 6, Frontal-Delaunay at the input's mean edge length) on a shared mesh
 # gives a mesh with no element pointing against the input normals (the
-# input triangle closest to each element's centroid), on its input.
+# input triangles closest to each element's centroid and to the points
+# halfway to its corners), on its input.
 #
 #   sharedMeshRemesh.sh BENCH_REMESH_BINARY MESH.stl [TIMEOUT]
 #
