@@ -53,3 +53,17 @@ double opt_mesh_compound_repair(OPT_ARGS_NUM)
   if(action & GMSH_SET) o.repair = (val != 0.);
   return o.repair ? 1. : 0.;
 }
+
+double opt_mesh_compound_report(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) o.report = (val != 0.);
+  return o.report ? 1. : 0.;
+}
+
+std::string opt_mesh_compound_report_file(OPT_ARGS_STR)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) o.reportFile = val;
+  return o.reportFile;
+}

@@ -7,6 +7,8 @@
 #ifndef REPARAM_OPTIONS_H
 #define REPARAM_OPTIONS_H
 
+#include <string>
+
 // Values of Mesh.CompoundParametrization
 enum class compoundParametrization {
   gmsh = 0, // Gmsh's own code (the reference)
@@ -24,6 +26,10 @@ struct reparamOptions {
   bool fillHoles = true;
   // Mesh.CompoundRepair: cavity and boundary checks on flipped triangles
   bool repair = true;
+  // Mesh.CompoundReport: quality and fidelity lines after meshing
+  bool report = true;
+  // Mesh.CompoundReportFile: the same report as JSON; empty: none
+  std::string reportFile;
 };
 
 reparamOptions &getReparamOptions();

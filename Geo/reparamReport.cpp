@@ -21,6 +21,7 @@
 
 void reparamReportMeshedFace(GFace *gf, double seconds)
 {
+  if(!getReparamOptions().report) return;
   int map = getReparamOptions().parametrization;
   faceQuality q = computeFaceQuality({gf});
   double t0 = TimeOfDay();

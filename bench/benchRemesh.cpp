@@ -6,7 +6,8 @@
 // Merge, ClassifySurfaces{40 deg, 1, 1, 180 deg} and CreateGeometry with
 // Mesh.CompoundParametrization = map, then Mesh 2 with Mesh.Algorithm =
 // algorithm (default 6) at a uniform size of sizeFactor (default 1) times
-// the input's mean edge length. Prints one line:
+// the input's mean edge length. Prints "classify S" (ClassifySurfaces)
+// once the model is classified, then one line:
 //
 //   remesh map M algorithm A geometry S mesh S faces F meshed K triangles T
 //   quadrangles Q inverted I hausdorff H mean D kappaMin K kappaMean K
@@ -46,6 +47,9 @@ int main(int argc, char **argv)
   const double sizeFactor = argc > 4 ? std::atof(argv[4]) : 1.;
 
   classifiedStl stl = loadClassifiedStl(argv[1], map);
+  // before the rest, so that a caller that times out knows which stage hung
+  std::printf("classify %.3f\n", stl.classifySeconds);
+  std::fflush(stdout);
   double t0 = TimeOfDay();
   try {
     gmsh::model::mesh::createGeometry();
@@ -57,6 +61,8 @@ int main(int argc, char **argv)
   gmsh::option::setNumber("Mesh.MeshSizeMin", size);
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   gmsh::option::setNumber("Mesh.Algorithm", algorithm);
+  // Mesh 2 times the meshing alone: quality and fidelity are measured below
+  gmsh::option::setNumber("Mesh.CompoundReport", 0);
   t0 = TimeOfDay();
   try {
     gmsh::model::mesh::generate(2);
