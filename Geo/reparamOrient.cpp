@@ -14,6 +14,7 @@
 #include "meshFidelity.h"
 #include "reparamOptions.h"
 #include "reparamOrient.h"
+#include "reparamReport.h"
 
 bool reparamOrientMeshedFace(GFace *gf)
 {
@@ -23,11 +24,22 @@ bool reparamOrientMeshedFace(GFace *gf)
      gf->geomType() != GEntity::DiscreteSurface || gf->stl_triangles.empty())
     return false;
   const std::size_t elements = gf->getNumMeshElements();
+  // The report (Mesh.CompoundReport) has already searched the input under
+  // every element of this mesh
+  // (once: a later call, e.g. after the elements were edited, recounts)
+  faceReport *report = findFaceReport(gf);
+  if(report && report->oriented) report = nullptr;
   std::size_t inverted =
-    countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
+    report && report->hasInput ?
+      report->fidelity.inverted :
+      countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
   if(2 * inverted > elements) {
     for(std::size_t i = 0; i < elements; i++) gf->getMeshElement(i)->reverse();
     inverted = elements - inverted;
+  }
+  if(report && report->hasInput) {
+    report->fidelity.inverted = inverted;
+    report->oriented = true;
   }
   if(inverted)
     Msg::Warning("Reparam: surface %d: %lu of its %lu elements point against "

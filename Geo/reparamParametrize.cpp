@@ -21,6 +21,7 @@
 #include "holeFilling.h"
 #include "mapChain.h"
 #include "reparamOptions.h"
+#include "reparamReport.h"
 
 namespace {
 
@@ -64,6 +65,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<int> &stl_triangles)
 {
   const int choice = getReparamOptions().parametrization;
+  // whatever happens below, an earlier record for these arrays is stale
+  recordParametrization(stl_vertices_uv, nullptr);
   if(choice == (int)compoundParametrization::gmsh) return 0;
 
   stl_vertices_uv.clear();
@@ -199,6 +202,24 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     stl_vertices_uv[i] = SPoint2(map.uv[2 * i], map.uv[2 * i + 1]);
   double checkTime = 0.;
   for(const mapAttempt &a : result.attempts) checkTime += a.checkTime;
+  parametrizationRecord record;
+  for(std::size_t i = 0; i < result.attempts.size(); i++) {
+    record.mapsTried.push_back(result.attempts[i].map);
+    if((int)i != result.chosen)
+      record.fallbackTime += result.attempts[i].mapTime;
+  }
+  record.map = chosen.map;
+  record.bijective = result.bijective;
+  record.nodes = nodes.size();
+  record.triangles = triangles.size();
+  record.holes = patch.boundaryLoops.size() - 1;
+  record.filledHoles = filledHoles;
+  record.patchTime = t1 - t0;
+  record.fillTime = t2 - t1;
+  record.assembleTime = map.assembleTime;
+  record.solveTime = map.solveTime;
+  record.checkTime = checkTime;
+  recordParametrization(stl_vertices_uv, &record);
   Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
             "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "
             "%.3g s, checks %.3g s",

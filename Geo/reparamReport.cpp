@@ -1,48 +1,146 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
-// The quality line of a newly meshed discrete face (hook in
-// discreteFace::mesh, patches/0001): shape of the elements and fidelity to
-// the triangulation the face was parametrized from.
+// The stages' records for the report (Geo/reparamReport.h), measured as the
+// faces are meshed and printed once the model is oriented.
 
 #include <algorithm>
-#include <cstdio>
-#include <string>
+#include <cerrno>
+#include <cstring>
+#include <map>
+#include <mutex>
 #include "GFace.h"
 #include "GModel.h"
-#include "MLine.h"
-#include "MTriangle.h"
-// after its prerequisites (it includes none)
-#include "GModelParametrize.h"
 #include "GmshMessage.h"
+#include "MElement.h"
 #include "OS.h"
-#include "meshFidelity.h"
 #include "reparamOptions.h"
-#include "faceQuality.h"
+#include "reparamReport.h"
+
+namespace {
+
+  // Keyed by the address of the face's uv array (see recordParametrization)
+  std::map<const std::vector<SPoint2> *, parametrizationRecord> &
+  parametrizations()
+  {
+    static std::map<const std::vector<SPoint2> *, parametrizationRecord> r;
+    return r;
+  }
+
+  bool sameMesh(const faceReport &r, const GFace *gf)
+  {
+    return r.face == gf && gf->getNumMeshElements() == r.elements &&
+           r.elements && gf->getMeshElement(0) == r.firstElement;
+  }
+
+} // namespace
+
+void recordParametrization(const std::vector<SPoint2> &uv,
+                           const parametrizationRecord *record)
+{
+  if(record)
+    parametrizations()[&uv] = *record;
+  else
+    parametrizations().erase(&uv);
+}
+
+const parametrizationRecord *findParametrization(const GFace *gf)
+{
+  auto it = parametrizations().find(&gf->stl_vertices_uv);
+  if(it == parametrizations().end()) return nullptr;
+  // a face created where a deleted one was, with a parametrization read
+  // from a file, is not the one recorded
+  const parametrizationRecord &r = it->second;
+  if(r.nodes != gf->stl_vertices_uv.size() ||
+     r.triangles != gf->stl_triangles.size() / 3)
+    return nullptr;
+  return &r;
+}
+
+std::vector<faceReport> &pendingFaceReports()
+{
+  static std::vector<faceReport> reports;
+  return reports;
+}
+
+faceReport *findFaceReport(const GFace *gf)
+{
+  for(faceReport &r : pendingFaceReports())
+    if(sameMesh(r, gf)) return &r;
+  return nullptr;
+}
 
 void reparamReportMeshedFace(GFace *gf, double seconds)
 {
   if(!getReparamOptions().report) return;
-  int map = getReparamOptions().parametrization;
-  faceQuality q = computeFaceQuality({gf});
-  double t0 = TimeOfDay();
-  meshFidelity f = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
-  double diagonal = f.diagonal > 0. ? f.diagonal : 1.;
-  // The elements are oriented once all faces are meshed (orientMeshGFace,
-  // by a vote of all elements: Geo/reparamOrient.cpp), so that the minority
-  // is what will point against the input normals
-  std::size_t inverted = std::min(f.inverted, f.elements - f.inverted);
-  std::string eta;
-  if(q.quadrangles) {
-    char s[64];
-    snprintf(s, sizeof(s), ", eta min %.3f mean %.3f", q.etaMin, q.etaMean);
-    eta = s;
+  faceReport r;
+  r.tag = gf->tag();
+  const parametrizationRecord *p = findParametrization(gf);
+  if(p) {
+    r.reparametrized = true;
+    r.parametrization = *p;
   }
-  Msg::Info("Reparam: surface %d (%s map): planar mesh %.3g s, %lu "
-            "triangles, %lu quadrangles, kappa min %.3f mean %.3f, "
-            "%.1f%% below 0.3%s, tau %.1f%%, Hausdorff %.3g%% (mean %.3g%%) "
-            "of the diagonal, %lu inverted (%.3g s)",
-            gf->tag(), compoundParametrizationName(map), seconds, q.triangles,
-            q.quadrangles, q.kappaMin, q.kappaMean, 100. * q.kappaShareBelow03,
-            eta.c_str(), q.tau, 100. * f.hausdorff / diagonal,
-            100. * f.meanDistance / diagonal, inverted, TimeOfDay() - t0);
+  else {
+    r.parametrization.nodes = gf->stl_vertices_uv.size();
+    r.parametrization.triangles = gf->stl_triangles.size() / 3;
+  }
+  r.meshTime = seconds;
+  r.quality = computeFaceQuality({gf});
+  r.face = gf;
+  r.elements = gf->getNumMeshElements();
+  r.firstElement = r.elements ? gf->getMeshElement(0) : nullptr;
+  if(!gf->stl_triangles.empty() && r.elements) {
+    // Measured now, before a compound hands its elements back to its parts;
+    // the orientation vote reuses these searches (Geo/reparamOrient.cpp)
+    r.hasInput = true;
+    for(const SPoint3 &x : gf->stl_vertices_xyz) r.inputBox += x;
+    r.fidelity = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
+  }
+  // a face meshed twice before the report: keep the last mesh; faces may be
+  // meshed in parallel (OpenMP builds)
+  static std::mutex reportsMutex;
+  std::lock_guard<std::mutex> lock(reportsMutex);
+  std::vector<faceReport> &reports = pendingFaceReports();
+  reports.erase(
+    std::remove_if(reports.begin(), reports.end(),
+                   [gf](const faceReport &x) { return x.face == gf; }),
+    reports.end());
+  reports.push_back(r);
+}
+
+void reparamReportMeshedModel(GModel *m)
+{
+  std::vector<faceReport> &reports = pendingFaceReports();
+  if(reports.empty()) return;
+  double t0 = TimeOfDay();
+  for(faceReport &r : reports) {
+    if(!r.hasInput || r.oriented) continue;
+    // Oriented by Gmsh (its own map, or a compound's elements handed back to
+    // its parts): count against the final orientation when the mesh is
+    // still there, else assume Gmsh chose the majority
+    GFace *gf = m->getFaceByTag(r.tag);
+    if(gf && sameMesh(r, gf))
+      r.fidelity.inverted =
+        countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
+    else
+      r.fidelity.inverted = std::min(r.fidelity.inverted,
+                                     r.fidelity.elements - r.fidelity.inverted);
+    r.oriented = true;
+  }
+  for(const std::string &line : reportTable(reports))
+    Msg::Info("Reparam: %s", line.c_str());
+  const std::string &file = getReparamOptions().reportFile;
+  if(!file.empty()) {
+    FILE *fp = Fopen(file.c_str(), "w");
+    if(!fp)
+      Msg::Error("Cannot write Mesh.CompoundReportFile '%s': %s", file.c_str(),
+                 std::strerror(errno));
+    else {
+      std::string json = reportJson(reports);
+      fwrite(json.data(), 1, json.size(), fp);
+      fclose(fp);
+      Msg::Info("Reparam: report written to '%s'", file.c_str());
+    }
+  }
+  Msg::Debug("Reparam: report in %g s", TimeOfDay() - t0);
+  reports.clear();
 }

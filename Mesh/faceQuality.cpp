@@ -37,6 +37,7 @@ faceQuality computeFaceQuality(const std::vector<GFace *> &faces)
   }
   if(q.quadrangles) q.etaMean /= q.quadrangles;
   if(edges > 0.) q.tau = 100. * std::exp(tauLogSum / edges);
+  q.edges = (std::size_t)edges;
   kappaStatistics k = computeKappaStatistics(triangles);
   q.triangles = k.triangles;
   q.kappaMin = k.min;

@@ -19,6 +19,7 @@ struct faceQuality {
   // (BGM_MeshSize: mesh size options and background field; sizes from
   // curvature, which need (u, v), are left out)
   double tau = 0.;
+  std::size_t edges = 0; // unique edges tau is taken over
 };
 
 faceQuality computeFaceQuality(const std::vector<GFace *> &faces);

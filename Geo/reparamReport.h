@@ -1,0 +1,80 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The report after meshing (Mesh.CompoundReport, Mesh.CompoundReportFile):
+// what each stage did to each compound or discrete face, gathered as the
+// stages run (parametrization at CreateGeometry, planar mesh, orientation)
+// and printed once the model is meshed and oriented, when the inverted
+// elements are final.
+
+#ifndef REPARAM_REPORT_H
+#define REPARAM_REPORT_H
+
+#include <cstdio>
+#include <string>
+#include <vector>
+#include "SBoundingBox3d.h"
+#include "SPoint2.h"
+#include "faceQuality.h"
+#include "meshFidelity.h"
+
+class GFace;
+class GModel;
+class MElement;
+
+// What reparamComputeParametrization did
+struct parametrizationRecord {
+  std::vector<int> mapsTried; // Mesh.CompoundParametrization values, in turn
+  int map = -1; // the one kept
+  bool bijective = false;
+  std::size_t nodes = 0, triangles = 0, holes = 0, filledHoles = 0;
+  double patchTime = 0., fillTime = 0., assembleTime = 0., solveTime = 0.,
+         checkTime = 0.;
+  double fallbackTime = 0.; // the maps tried before the one kept
+};
+
+// Records the parametrization written into `uv` (the stl_vertices_uv of the
+// face being created: Gmsh's hook gets the arrays, not the face); forgets
+// any earlier record for `uv` when record is null (Gmsh's own map).
+void recordParametrization(const std::vector<SPoint2> &uv,
+                           const parametrizationRecord *record);
+
+// The record of gf's current parametrization, or null
+const parametrizationRecord *findParametrization(const GFace *gf);
+
+// One line of the report
+struct faceReport {
+  int tag = 0;
+  bool reparametrized = false; // by Reparam (else Gmsh's own map)
+  parametrizationRecord parametrization;
+  double meshTime = 0.;
+  faceQuality quality;
+  bool hasInput = false; // fidelity measured against an input triangulation
+  meshFidelity fidelity; // inverted: against the final orientation
+  SBoundingBox3d inputBox; // to relate the distances of several faces
+  bool oriented = false; // fidelity.inverted is after orientation
+  // to tell whether the mesh measured is still the face's mesh
+  const GFace *face = nullptr;
+  const MElement *firstElement = nullptr;
+  std::size_t elements = 0;
+};
+
+// The reports gathered since the last reparamReportMeshedModel
+std::vector<faceReport> &pendingFaceReports();
+
+// The pending report of gf if its mesh is still the one measured, else null
+faceReport *findFaceReport(const GFace *gf);
+
+// Measures the new mesh of discrete face gf (hook in discreteFace::mesh,
+// patches/0001) and keeps the result for the model's report
+void reparamReportMeshedFace(GFace *gf, double seconds);
+
+// Prints the pending reports (one line per face and a total), writes them
+// to Mesh.CompoundReportFile if set, and forgets them (hook in GenerateMesh
+// after the mesh is oriented, patches/0005)
+void reparamReportMeshedModel(GModel *m);
+
+// The table lines and the JSON text of `reports` (for the hook and tests)
+std::vector<std::string> reportTable(const std::vector<faceReport> &reports);
+std::string reportJson(const std::vector<faceReport> &reports);
+
+#endif

@@ -1,0 +1,156 @@
+// Reparam - the report after meshing: its table, its JSON, and what the
+// stages record for it on a real remesh
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <gtest/gtest.h>
+#include "GFace.h"
+#include "GModel.h"
+#include "MTriangle.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
+#include "reparamReport.h"
+#include "triangleQuality.h"
+
+namespace {
+
+  faceReport face(int tag, std::vector<int> maps, std::size_t triangles,
+                  double kappaMin, double kappaMean, std::size_t edges,
+                  double tau, SPoint3 boxMax, double hausdorff,
+                  double meanDistance, std::size_t inverted)
+  {
+    faceReport r;
+    r.tag = tag;
+    r.reparametrized = true;
+    r.parametrization.mapsTried = maps;
+    r.parametrization.map = maps.back();
+    r.parametrization.bijective = true;
+    r.parametrization.solveTime = 0.25;
+    r.meshTime = 1.;
+    r.quality.triangles = triangles;
+    r.quality.kappaMin = kappaMin;
+    r.quality.kappaMean = kappaMean;
+    r.quality.edges = edges;
+    r.quality.tau = tau;
+    r.hasInput = true;
+    r.inputBox += SPoint3(0., 0., 0.);
+    r.inputBox += boxMax;
+    r.fidelity.elements = triangles;
+    r.fidelity.hausdorff = hausdorff;
+    r.fidelity.meanDistance = meanDistance;
+    r.fidelity.diagonal = r.inputBox.diag();
+    r.fidelity.inverted = inverted;
+    r.oriented = true;
+    return r;
+  }
+
+  std::string number(double x)
+  {
+    char s[32];
+    snprintf(s, sizeof(s), "%.6g", x);
+    return s;
+  }
+
+  bool has(const std::string &text, const std::string &s)
+  {
+    return text.find(s) != std::string::npos;
+  }
+
+} // namespace
+
+TEST(reparamReport, totalCombinesFacesByTheirWeights)
+{
+  std::vector<faceReport> reports = {
+    face(1, {3}, 100, 0.5, 0.9, 150, 90., SPoint3(1, 0, 0), 0.1, 0.01, 0),
+    face(2, {5, 4}, 300, 0.3, 0.8, 450, 80., SPoint3(3, 4, 0), 0.2, 0.02, 2)};
+  reports[1].quality.quadrangles = 10;
+  reports[1].quality.etaMin = 0.5;
+  reports[1].quality.etaMean = 0.7;
+
+  std::vector<std::string> table = reportTable(reports);
+  ASSERT_EQ(table.size(), 4u); // header, 2 faces, total
+  EXPECT_EQ(table[1].substr(0, 12), "1         MV");
+  EXPECT_EQ(table[2].substr(0, 24), "2         spectral>LSCM ");
+  EXPECT_EQ(table[3].substr(0, 17), "total     2 surf.");
+  // kappa min over faces, mean weighted by triangles: (90 + 240) / 400
+  EXPECT_TRUE(has(table[3], " 0.300  0.825 ")) << table[3];
+  // tau: exponential of the mean over all edges, not the mean of the taus
+  double tau = 100. * std::exp((150. * std::log(0.9) + 450. * std::log(0.8)) /
+                               600.);
+  char s[16];
+  snprintf(s, sizeof(s), " %5.1f ", tau);
+  EXPECT_TRUE(has(table[3], s)) << table[3] << " / " << s;
+
+  std::string json = reportJson(reports);
+  EXPECT_TRUE(has(json, "\"mapsTried\": [\"spectral conformal\", \"finite "
+                        "element conformal (LSCM)\"]"));
+  std::string total = json.substr(json.find("\"total\""));
+  EXPECT_TRUE(has(total, "\"kappaMean\": 0.825,"));
+  EXPECT_TRUE(has(total, "\"tau\": " + number(tau) + ","));
+  EXPECT_TRUE(has(total, "\"etaMin\": 0.5, \"etaMean\": 0.7,"));
+  // distances against the union of the inputs' boxes (diagonal 5)
+  EXPECT_TRUE(has(total, "\"hausdorffPercent\": 4,"));
+  EXPECT_TRUE(has(total, "\"meanDistancePercent\": 0.35,"));
+  EXPECT_TRUE(has(total, "\"inverted\": 2}"));
+  EXPECT_TRUE(has(total, "\"solve\": 0.5,"));
+  EXPECT_TRUE(has(total, "\"planarMesh\": 2}"));
+  // a face without quadrangles has no eta: null, not 0
+  std::string first = json.substr(0, json.find("\"surface\": 2"));
+  EXPECT_TRUE(has(first, "\"etaMin\": null"));
+}
+
+TEST(reparamReport, remeshReportsWhatEachStageDid)
+{
+  gmsh::clear();
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
+  const std::string file = testing::TempDir() + "reparamReport.json";
+  std::remove(file.c_str());
+  gmsh::option::setString("Mesh.CompoundReportFile", file);
+  gmsh::merge(tutorialFile("dome.stl"));
+  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+  gmsh::model::mesh::createGeometry();
+
+  GFace *gf = nullptr;
+  for(auto it = GModel::current()->firstFace();
+      it != GModel::current()->lastFace(); ++it)
+    if(!(*it)->stl_triangles.empty()) gf = *it;
+  ASSERT_NE(gf, nullptr);
+  const parametrizationRecord *p = findParametrization(gf);
+  ASSERT_NE(p, nullptr);
+  // the dome is a disk with two holes: spectral is one-to-one at once
+  EXPECT_EQ(p->mapsTried, std::vector<int>{5});
+  EXPECT_EQ(p->map, 5);
+  EXPECT_TRUE(p->bijective);
+  EXPECT_EQ(p->triangles, 3300u);
+  EXPECT_EQ(p->holes, 2u);
+  EXPECT_EQ(p->filledHoles, 2u);
+
+  gmsh::model::mesh::generate(2);
+  gmsh::option::setString("Mesh.CompoundReportFile", "");
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  EXPECT_TRUE(pendingFaceReports().empty()); // printed and forgotten
+
+  std::ifstream in(file);
+  ASSERT_TRUE(in.good()) << file;
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string json = text.str();
+  kappaStatistics k = computeKappaStatistics(gf->triangles);
+  EXPECT_GT(k.triangles, 3000u);
+  EXPECT_TRUE(has(json, "\"surface\": " + std::to_string(gf->tag())));
+  EXPECT_TRUE(has(json, "\"map\": \"spectral conformal\""));
+  EXPECT_TRUE(has(json, "\"triangles\": " + std::to_string(k.triangles)));
+  EXPECT_TRUE(has(json, "\"kappaMin\": " + number(k.min)));
+  EXPECT_TRUE(has(json, "\"kappaMean\": " + number(k.mean)));
+  EXPECT_TRUE(has(json, "\"inverted\": 0}"));
+
+  // off: nothing measured, nothing kept
+  gmsh::option::setNumber("Mesh.CompoundReport", 0);
+  gmsh::model::mesh::generate(2);
+  EXPECT_TRUE(pendingFaceReports().empty());
+  gmsh::option::setNumber("Mesh.CompoundReport", 1);
+}
