@@ -1,7 +1,8 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
-// Plugin(SurfaceMeshQuality): quality of the triangles of any surface mesh
-// (stock Gmsh meshes too), for comparing parametrizations and meshers.
+// Plugin(SurfaceMeshQuality): quality of any surface mesh (stock Gmsh meshes
+// too): kappa, eta, tau and, for discrete faces, the distance to their input
+// triangulation; views of kappa / eta per element and their histograms.
 
 #ifndef SURFACE_MESH_QUALITY_H
 #define SURFACE_MESH_QUALITY_H
@@ -13,7 +14,7 @@ public:
   std::string getName() const { return "SurfaceMeshQuality"; }
   std::string getShortHelp() const
   {
-    return "Aspect ratio (kappa) of surface triangles";
+    return "Quality (kappa, eta, tau) of surface meshes, with views";
   }
   std::string getHelp() const;
   std::string getAuthor() const { return "Reparam"; }

@@ -77,8 +77,8 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   // kappa min over faces, mean weighted by triangles: (90 + 240) / 400
   EXPECT_TRUE(has(table[3], " 0.300  0.825 ")) << table[3];
   // tau: exponential of the mean over all edges, not the mean of the taus
-  double tau = 100. * std::exp((150. * std::log(0.9) + 450. * std::log(0.8)) /
-                               600.);
+  double tau =
+    100. * std::exp((150. * std::log(0.9) + 450. * std::log(0.8)) / 600.);
   char s[16];
   snprintf(s, sizeof(s), " %5.1f ", tau);
   EXPECT_TRUE(has(table[3], s)) << table[3] << " / " << s;
