@@ -170,10 +170,34 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     nodes.clear();
     return -1;
   }
+  if(!result.bijective && choice != (int)compoundParametrization::automatic &&
+     choice != (int)compoundParametrization::meanValue) {
+    // A flipped or folded (u, v) can make the planar mesher loop for ever
+    // (gmsh2x_implant with LSCM: MeshAdapt on a face with 14 flipped
+    // triangles never ends): a map chosen by hand falls back to the mean
+    // value map, one-to-one on a convex boundary
+    const mapAttempt &failed = result.attempts[result.chosen];
+    checkedMap fallback =
+      runMapChain(*mapped, mapChain((int)compoundParametrization::meanValue),
+                  getReparamOptions().repair);
+    for(const mapAttempt &a : fallback.attempts) logAttempt(surface, a);
+    if(fallback.chosen >= 0 && fallback.bijective) {
+      Msg::Warning("%s map of %s is not one-to-one (%lu flipped triangles, "
+                   "%lu folds): using the mean value map instead",
+                   compoundParametrizationName(choice), surface.c_str(),
+                   failed.flippedAfter, failed.foldsAfter);
+      result.chosen = (int)result.attempts.size() + fallback.chosen;
+      result.attempts.insert(result.attempts.end(), fallback.attempts.begin(),
+                             fallback.attempts.end());
+      result.map = std::move(fallback.map);
+      result.bijective = true;
+    }
+  }
   const mapAttempt &chosen = result.attempts[result.chosen];
   if(!result.bijective) {
     // Never a folded or flipped map to the planar mesher in automatic mode;
-    // a map chosen by hand is kept for study, with a warning
+    // when even the mean value map is not one-to-one by hand, it is kept,
+    // with a warning
     if(choice == (int)compoundParametrization::automatic) {
       Msg::Error("No one-to-one parametrization of %s: every map of the "
                  "automatic chain flips or folds",

@@ -11,7 +11,7 @@
 //
 //   remesh map M algorithm A geometry S mesh S faces F meshed K triangles T
 //   quadrangles Q inverted I hausdorff H mean D kappaMin K kappaMean K
-//   below03 P etaMin E etaMean E tau T fidelity S
+//   below03 P etaMin E etaMean E tau T fidelity S fallbacks B
 //
 // geometry: CreateGeometry (the parametrizations), mesh: Mesh 2; faces: the
 // discrete faces with a parametrization, meshed: those that got elements;
@@ -19,7 +19,8 @@
 // under them (meshFidelity::inverted); hausdorff and mean: largest
 // and element-weighted mean two-sided distance of a face to its input, in %
 // of the input's bounding-box diagonal; kappa over all triangles, eta over
-// all quadrangles, tau (%) over all edges.
+// all quadrangles, tau (%) over all edges; fallbacks: faces where the map
+// (3 to 5) was not one-to-one and the mean value map took over.
 
 #include <algorithm>
 #include <cstdio>
@@ -34,6 +35,7 @@
 #include "gmsh.h"
 #include "meshFidelity.h"
 #include "faceQuality.h"
+#include "reparamReport.h"
 
 int main(int argc, char **argv)
 {
@@ -73,7 +75,7 @@ int main(int argc, char **argv)
   t0 = TimeOfDay();
   SBoundingBox3d box;
   std::vector<GFace *> meshedFaces;
-  std::size_t faces = 0, meshed = 0, inverted = 0;
+  std::size_t faces = 0, meshed = 0, inverted = 0, fallbacks = 0;
   double hausdorff = 0., weightedMean = 0.;
   std::size_t weight = 0;
   for(auto it = GModel::current()->firstFace();
@@ -81,6 +83,9 @@ int main(int argc, char **argv)
     GFace *gf = *it;
     if(gf->stl_triangles.empty()) continue;
     faces++;
+    // a map chosen by hand that is not one-to-one falls back to mean value
+    const parametrizationRecord *p = findParametrization(gf);
+    if(p && map != 6 && p->map != map) fallbacks++;
     for(const SPoint3 &p : gf->stl_vertices_xyz) box += p;
     if(gf->triangles.empty() && gf->quadrangles.empty()) continue;
     meshed++;
@@ -102,12 +107,13 @@ int main(int argc, char **argv)
   std::printf("remesh map %d algorithm %d geometry %.3f mesh %.3f faces %lu "
               "meshed %lu triangles %lu quadrangles %lu inverted %lu "
               "hausdorff %.4g mean %.4g kappaMin %.4f kappaMean %.4f below03 "
-              "%.4f etaMin %.4f etaMean %.4f tau %.2f fidelity %.3f\n",
+              "%.4f etaMin %.4f etaMean %.4f tau %.2f fidelity %.3f "
+              "fallbacks %lu\n",
               map, algorithm, geometry, mesh, faces, meshed, q.triangles,
               q.quadrangles, inverted, 100. * hausdorff / diagonal,
               weight ? 100. * weightedMean / weight / diagonal : 0., q.kappaMin,
               q.kappaMean, q.kappaShareBelow03, q.etaMin, q.etaMean, q.tau,
-              fidelity);
+              fidelity, fallbacks);
   gmsh::finalize();
   return 0;
 }

@@ -102,8 +102,9 @@ TEST(gmshHook, automaticMapLogsItsChain)
 
 TEST(gmshHook, mapNotOneToOneIsReportedWhenChosenByHand)
 {
-  // the harmonic map flips on slivers; without repair it is kept (chosen by
-  // hand) with a warning, with repair it is fixed
+  // the harmonic map flips on slivers; without repair the mean value map
+  // takes over (a flipped map can hang the planar mesher), with a warning;
+  // with repair the harmonic map is fixed
   gmshTriangulation t(jitteredGrid(10, 0.95, 2));
   gmsh::option::setNumber("Mesh.CompoundRepair", 0);
   gmshParametrization p;
@@ -112,6 +113,8 @@ TEST(gmshHook, mapNotOneToOneIsReportedWhenChosenByHand)
   gmsh::option::setNumber("Mesh.CompoundRepair", 1);
   EXPECT_TRUE(p.ok);
   EXPECT_TRUE(contains(log, "is not one-to-one"));
+  EXPECT_TRUE(contains(log, "using the mean value map instead"));
+  EXPECT_TRUE(contains(log, "mean value map: 0 flipped, 0 folds"));
   log = logOf([&] { p = parametrizeWith(t.triangles, 1); });
   EXPECT_TRUE(p.ok);
   EXPECT_FALSE(contains(log, "is not one-to-one ("));
