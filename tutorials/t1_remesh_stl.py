@@ -29,4 +29,20 @@ for parametrization in (0, 3):
     triangles, _ = gmsh.model.mesh.getElementsByType(2)
     print("%-20s %d triangles" % (names[parametrization], len(triangles)))
 
+# Reparam's plugins from the API: how conformal the last parametrization is
+# (Plugin(Parametrization)), and kappa per triangle (Plugin(SurfaceMeshQuality))
+gmsh.plugin.setNumber("Parametrization", "SurfaceTag", -1)
+gmsh.plugin.run("Parametrization")
+gmsh.plugin.setNumber("SurfaceMeshQuality", "CreateViews", 1)
+gmsh.plugin.run("SurfaceMeshQuality")
+for tag in gmsh.view.getTags():
+    name = gmsh.option.getString("View[%d].Name" % gmsh.view.getIndex(tag))
+    if name not in ("angle distortion", "kappa"):
+        continue
+    # list-based triangles: 9 coordinates, then one value per corner
+    types, counts, data = gmsh.view.getListData(tag)
+    values = [d[9::12] for t, d in zip(types, data) if t == "ST"][0]
+    print("%-20s mean %.3f over %d triangles" %
+          (name, sum(values) / len(values), len(values)))
+
 gmsh.finalize()
