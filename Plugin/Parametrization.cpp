@@ -7,7 +7,7 @@
 #include "PView.h"
 #include "PViewOptions.h"
 #include "Parametrization.h"
-#include "PluginManager.h"
+#include "reparamPluginRegistration.h"
 #include "mapDistortion.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
@@ -17,15 +17,8 @@ StringXNumber ParametrizationOptions_Number[] = {
   {GMSH_FULLRC, "SurfaceTag", nullptr, -1.},
   {GMSH_FULLRC, "IsoLines", nullptr, 20.}};
 
-// Registered with Gmsh's plugin manager when libgmsh is loaded
-static GMSH_Plugin *createParametrizationPlugin()
-{
-  return new GMSH_ParametrizationPlugin();
-}
 static const bool parametrizationRegistered =
-  (PluginManager::addPluginFactory("Parametrization",
-                                   createParametrizationPlugin),
-   true);
+  registerReparamPlugin<GMSH_ParametrizationPlugin>("Parametrization");
 
 std::string GMSH_ParametrizationPlugin::getHelp() const
 {

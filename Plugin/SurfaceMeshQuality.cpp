@@ -3,7 +3,7 @@
 #include <algorithm>
 #include "GFace.h"
 #include "GModel.h"
-#include "PluginManager.h"
+#include "reparamPluginRegistration.h"
 #include "SurfaceMeshQuality.h"
 #include "faceQuality.h"
 #include "meshFidelity.h"
@@ -16,15 +16,8 @@ StringXNumber SurfaceMeshQualityOptions_Number[] = {
   {GMSH_FULLRC, "CreateViews", nullptr, 1.},
   {GMSH_FULLRC, "HistogramBins", nullptr, 20.}};
 
-// Registered with Gmsh's plugin manager when libgmsh is loaded
-static GMSH_Plugin *createSurfaceMeshQualityPlugin()
-{
-  return new GMSH_SurfaceMeshQualityPlugin();
-}
 static const bool surfaceMeshQualityRegistered =
-  (PluginManager::addPluginFactory("SurfaceMeshQuality",
-                                   createSurfaceMeshQualityPlugin),
-   true);
+  registerReparamPlugin<GMSH_SurfaceMeshQualityPlugin>("SurfaceMeshQuality");
 
 std::string GMSH_SurfaceMeshQualityPlugin::getHelp() const
 {
