@@ -107,10 +107,34 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
   reports.push_back(r);
 }
 
+std::vector<int> unparametrizedFaces(GModel *m)
+{
+  // A discrete face whose CreateGeometry failed has lost its triangles and
+  // has no (u, v): the planar mesher skips it, leaving a hole in the mesh
+  std::vector<int> tags;
+  for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+    GFace *gf = *it;
+    if(gf->geomType() == GEntity::DiscreteSurface && gf->compound.empty() &&
+       gf->stl_triangles.empty() && !gf->getNumMeshElements())
+      tags.push_back(gf->tag());
+  }
+  return tags;
+}
+
 void reparamReportMeshedModel(GModel *m)
 {
   std::vector<faceReport> &reports = pendingFaceReports();
-  if(reports.empty()) return;
+  if(!getReparamOptions().report) return;
+  const std::vector<int> missing = unparametrizedFaces(m);
+  if(reports.empty() && missing.empty()) return;
+  if(!missing.empty()) {
+    std::string list;
+    for(int tag : missing)
+      list += (list.empty() ? "" : ", ") + std::to_string(tag);
+    Msg::Warning("Reparam: %lu discrete surface%s without a parametrization "
+                 "left unmeshed (a hole in the mesh): %s",
+                 missing.size(), missing.size() > 1 ? "s" : "", list.c_str());
+  }
   double t0 = TimeOfDay();
   for(faceReport &r : reports) {
     if(!r.hasInput || r.oriented) continue;
@@ -126,8 +150,9 @@ void reparamReportMeshedModel(GModel *m)
                                      r.fidelity.elements - r.fidelity.inverted);
     r.oriented = true;
   }
-  for(const std::string &line : reportTable(reports))
-    Msg::Info("Reparam: %s", line.c_str());
+  if(!reports.empty())
+    for(const std::string &line : reportTable(reports))
+      Msg::Info("Reparam: %s", line.c_str());
   const std::string &file = getReparamOptions().reportFile;
   if(!file.empty()) {
     FILE *fp = Fopen(file.c_str(), "w");
@@ -135,7 +160,7 @@ void reparamReportMeshedModel(GModel *m)
       Msg::Error("Cannot write Mesh.CompoundReportFile '%s': %s", file.c_str(),
                  std::strerror(errno));
     else {
-      std::string json = reportJson(reports);
+      std::string json = reportJson(reports, missing);
       fwrite(json.data(), 1, json.size(), fp);
       fclose(fp);
       Msg::Info("Reparam: report written to '%s'", file.c_str());

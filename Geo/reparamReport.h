@@ -73,8 +73,14 @@ void reparamReportMeshedFace(GFace *gf, double seconds);
 // after the mesh is oriented, patches/0005)
 void reparamReportMeshedModel(GModel *m);
 
-// The table lines and the JSON text of `reports` (for the hook and tests)
+// The discrete faces of m without a parametrization nor a mesh (their
+// CreateGeometry failed): holes in the mesh, named by the report
+std::vector<int> unparametrizedFaces(GModel *m);
+
+// The table lines and the JSON text of `reports` (for the hook and tests);
+// the JSON lists `unmeshed` faces too
 std::vector<std::string> reportTable(const std::vector<faceReport> &reports);
-std::string reportJson(const std::vector<faceReport> &reports);
+std::string reportJson(const std::vector<faceReport> &reports,
+                       const std::vector<int> &unmeshed = {});
 
 #endif

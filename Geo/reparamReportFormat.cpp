@@ -195,7 +195,8 @@ std::vector<std::string> reportTable(const std::vector<faceReport> &reports)
   return lines;
 }
 
-std::string reportJson(const std::vector<faceReport> &reports)
+std::string reportJson(const std::vector<faceReport> &reports,
+                       const std::vector<int> &unmeshed)
 {
   std::string s = "{\n  \"parametrizationOption\": " +
                   std::to_string(getReparamOptions().parametrization) +
@@ -221,7 +222,10 @@ std::string reportJson(const std::vector<faceReport> &reports)
     s += ", \"filledHoles\": " + std::to_string(p.filledHoles) + ", ";
     s += jsonFields(r) + "}";
   }
-  s += "\n  ],\n  \"total\": {\"surfaces\": " + std::to_string(reports.size()) +
+  s += "\n  ],\n  \"unmeshedSurfaces\": [";
+  for(std::size_t i = 0; i < unmeshed.size(); i++)
+    s += (i ? ", " : "") + std::to_string(unmeshed[i]);
+  s += "],\n  \"total\": {\"surfaces\": " + std::to_string(reports.size()) +
        ", " + jsonFields(total(reports)) + "}\n}\n";
   return s;
 }

@@ -14,7 +14,8 @@
 //   below03 P etaMin E etaMean E tau T fidelity S fallbacks B
 //
 // geometry: CreateGeometry (the parametrizations), mesh: Mesh 2; faces: the
-// discrete faces with a parametrization, meshed: those that got elements;
+// discrete faces (those whose parametrization failed too), meshed: those
+// that got elements;
 // inverted: elements (after Gmsh orients them) pointing against the input
 // under them (meshFidelity::inverted); hausdorff and mean: largest
 // and element-weighted mean two-sided distance of a face to its input, in %
@@ -103,7 +104,9 @@ int main(int argc, char **argv)
     weightedMean += f.meanDistance * f.elements;
     weight += f.elements;
   }
-  double diagonal = faces ? box.diag() : 1.;
+  // faces whose CreateGeometry failed: not meshed, holes in the mesh
+  faces += unparametrizedFaces(GModel::current()).size();
+  double diagonal = box.empty() ? 1. : box.diag();
   faceQuality q = computeFaceQuality(meshedFaces);
   double fidelity = TimeOfDay() - t0;
 

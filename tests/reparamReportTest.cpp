@@ -154,3 +154,42 @@ TEST(reparamReport, remeshReportsWhatEachStageDid)
   EXPECT_TRUE(pendingFaceReports().empty());
   gmsh::option::setNumber("Mesh.CompoundReport", 1);
 }
+
+TEST(reparamReport, surfaceLeftWithoutParametrizationIsNamed)
+{
+  // A NaN coordinate in the classified dome: its CreateGeometry fails, the
+  // planar mesher skips it, and the report names the hole
+  gmsh::clear();
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
+  gmsh::merge(tutorialFile("dome.stl"));
+  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+  std::vector<std::pair<int, int> > surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  ASSERT_EQ(surfaces.size(), 1u);
+  std::vector<std::size_t> nodes;
+  std::vector<double> coords, params;
+  gmsh::model::mesh::getNodes(nodes, coords, params, 2, surfaces[0].second);
+  ASSERT_FALSE(nodes.empty());
+  gmsh::model::mesh::setNode(nodes[0], {std::nan(""), 0., 0.}, {});
+  const std::string file = testing::TempDir() + "reparamReportHole.json";
+  std::remove(file.c_str());
+  gmsh::option::setString("Mesh.CompoundReportFile", file);
+  gmsh::model::mesh::createGeometry();
+  gmsh::model::mesh::generate(2);
+  gmsh::option::setString("Mesh.CompoundReportFile", "");
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+
+  EXPECT_EQ(unparametrizedFaces(GModel::current()),
+            std::vector<int>{surfaces[0].second});
+  std::ifstream in(file);
+  ASSERT_TRUE(in.good()) << "no report written";
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_TRUE(has(text.str(), "\"surfaces\": [\n  ],"));
+  EXPECT_TRUE(has(text.str(), "\"unmeshedSurfaces\": [" +
+                                std::to_string(surfaces[0].second) + "]"))
+    << text.str();
+  EXPECT_TRUE(has(reportJson({}, {2, 5}), "\"unmeshedSurfaces\": [2, 5]"));
+}
