@@ -25,8 +25,8 @@ bool reparamOrientMeshedFace(GFace *gf)
     return false;
   const std::size_t elements = gf->getNumMeshElements();
   // The report (Mesh.CompoundReport) has already searched the input under
-  // every element of this mesh
-  // (once: a later call, e.g. after the elements were edited, recounts)
+  // every element of this mesh; used once, so that a later call (after the
+  // elements were edited) counts again
   faceReport *report = findFaceReport(gf);
   if(report && report->oriented) report = nullptr;
   std::size_t inverted =
