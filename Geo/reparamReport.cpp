@@ -124,7 +124,10 @@ std::vector<int> unparametrizedFaces(GModel *m)
 void reparamReportMeshedModel(GModel *m)
 {
   std::vector<faceReport> &reports = pendingFaceReports();
-  if(!getReparamOptions().report) return;
+  if(!getReparamOptions().report) {
+    reports.clear(); // measured before the report was turned off
+    return;
+  }
   const std::vector<int> missing = unparametrizedFaces(m);
   if(reports.empty() && missing.empty()) return;
   if(!missing.empty()) {
