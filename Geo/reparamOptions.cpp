@@ -54,6 +54,13 @@ double opt_mesh_compound_repair(OPT_ARGS_NUM)
   return o.repair ? 1. : 0.;
 }
 
+double opt_mesh_compound_split(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) o.split = (val != 0.);
+  return o.split ? 1. : 0.;
+}
+
 double opt_mesh_compound_report(OPT_ARGS_NUM)
 {
   reparamOptions &o = getReparamOptions();

@@ -26,6 +26,9 @@ struct reparamOptions {
   bool fillHoles = true;
   // Mesh.CompoundRepair: cavity and boundary checks on flipped triangles
   bool repair = true;
+  // Mesh.CompoundSplit: ClassifySurfaces also splits the patches Reparam
+  // cannot map, or maps only with mean value because its conformal maps fold
+  bool split = false;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none

@@ -5,6 +5,9 @@
 // Gmsh's layout. Used by discrete faces' CreateGeometry, by Compound Surface
 // meshing and by the patch checks of ClassifySurfaces.
 
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <string>
 #include <unordered_map>
@@ -24,6 +27,24 @@
 #include "reparamReport.h"
 
 namespace {
+
+  // Set while ClassifySurfaces asks whether a patch can be parametrized
+  // (reparamCheckParametrizable): a failure there splits the patch, it is not
+  // an error of the model
+  bool checkingPatch = false;
+
+  void failure(const char *format, ...)
+  {
+    char message[1024];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof(message), format, args);
+    va_end(args);
+    if(checkingPatch)
+      Msg::Info("Reparam: %s", message);
+    else
+      Msg::Error("%s", message);
+  }
 
   // "surface 12" from the nodes' classification (the hook only gets the
   // triangles), else "triangulation (N triangles)"
@@ -114,8 +135,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                v->y(), v->z());
       where = s;
     }
-    Msg::Error("Cannot parametrize triangulation (%lu triangles)%s: %s",
-               triangles.size(), where.c_str(), err.what().c_str());
+    failure("Cannot parametrize triangulation (%lu triangles)%s: %s",
+            triangles.size(), where.c_str(), err.what().c_str());
     nodes.clear();
     return -1;
   }
@@ -155,9 +176,9 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
 
   std::vector<mapStep> steps = mapChain(choice);
   if(steps.empty()) {
-    Msg::Error("Mesh.CompoundParametrization = %d (%s) is not implemented: "
-               "use 0 to 6",
-               choice, compoundParametrizationName(choice));
+    failure("Mesh.CompoundParametrization = %d (%s) is not implemented: "
+            "use 0 to 6",
+            choice, compoundParametrizationName(choice));
     nodes.clear();
     return -1;
   }
@@ -165,8 +186,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   const std::string surface = surfaceName(nodes, triangles.size());
   for(const mapAttempt &a : result.attempts) logAttempt(surface, a);
   if(result.chosen < 0) {
-    Msg::Error("%s map of %s failed: %s", compoundParametrizationName(choice),
-               surface.c_str(), result.map.error.what().c_str());
+    failure("%s map of %s failed: %s", compoundParametrizationName(choice),
+            surface.c_str(), result.map.error.what().c_str());
     nodes.clear();
     return -1;
   }
@@ -199,9 +220,9 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     // when even the mean value map is not one-to-one by hand, it is kept,
     // with a warning
     if(choice == (int)compoundParametrization::automatic) {
-      Msg::Error("No one-to-one parametrization of %s: every map of the "
-                 "automatic chain flips or folds",
-                 surface.c_str());
+      failure("No one-to-one parametrization of %s: every map of the "
+              "automatic chain flips or folds",
+              surface.c_str());
       nodes.clear();
       return -1;
     }
@@ -252,4 +273,48 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
             patch.boundaryLoops.size() == 2 ? "" : "s", filledHoles, t1 - t0,
             t2 - t1, map.assembleTime, map.solveTime, checkTime);
   return 1;
+}
+
+int reparamCheckParametrizable(const std::vector<MTriangle *> &triangles,
+                               std::string &why)
+{
+  // Mesh.CompoundSplit = 0: Gmsh's own test, on Reparam's map
+  const int choice = getReparamOptions().parametrization;
+  if(choice == (int)compoundParametrization::gmsh || !getReparamOptions().split)
+    return 0;
+  std::vector<MVertex *> nodes;
+  std::vector<SPoint2> uv;
+  std::vector<SPoint3> xyz;
+  std::vector<int> tri;
+  checkingPatch = true;
+  int done = reparamComputeParametrization(triangles, nodes, uv, xyz, tri);
+  checkingPatch = false;
+  const parametrizationRecord *record = findParametrization(uv);
+  // The automatic chain ends on mean value when both conformal maps fold or
+  // flip: the patch winds around or is too elongated for a free boundary,
+  // and mean value on a circle squeezes it so much that the planar mesher
+  // may fail (gmsh2x_king_ascii: Frontal-Delaunay gave up, MeshAdapt left
+  // 1764 invalid elements). Smaller parts flatten conformally.
+  const bool wound = done > 0 && record &&
+                     choice == (int)compoundParametrization::automatic &&
+                     record->map == (int)compoundParametrization::meanValue &&
+                     record->mapsTried.size() > 1;
+  recordParametrization(uv, nullptr); // local arrays: nothing to keep
+  // Gmsh's own test: a (u, v) triangle below 1e-8 (twice its area, the
+  // image being about the unit disk) means a patch so stretched that parts
+  // of it would be meshed far too coarsely (aorta as one face: Hausdorff
+  // 12 % of the diagonal, 293 inverted elements)
+  double smallest = 1.;
+  for(std::size_t i = 0; done > 0 && i + 2 < tri.size(); i += 3) {
+    const SPoint2 &a = uv[tri[i]], &b = uv[tri[i + 1]], &c = uv[tri[i + 2]];
+    smallest = std::min(smallest, std::fabs((b.x() - a.x()) * (c.y() - a.y()) -
+                                            (b.y() - a.y()) * (c.x() - a.x())));
+  }
+  // A part too small to split further keeps what it has (mean value), or
+  // fails when CreateGeometry parametrizes it, with the reason
+  if((done > 0 && !wound && smallest >= 1e-8) || triangles.size() < 4) return 1;
+  why = done <= 0 ? "Reparam cannot parametrize it" :
+        wound     ? "its conformal maps fold (Reparam)" :
+                    "parametrized triangles are too small (Reparam)";
+  return 2;
 }

@@ -43,6 +43,13 @@ void recordParametrization(const std::vector<SPoint2> &uv,
     parametrizations().erase(&uv);
 }
 
+const parametrizationRecord *
+findParametrization(const std::vector<SPoint2> &uv)
+{
+  auto it = parametrizations().find(&uv);
+  return it == parametrizations().end() ? nullptr : &it->second;
+}
+
 const parametrizationRecord *findParametrization(const GFace *gf)
 {
   auto it = parametrizations().find(&gf->stl_vertices_uv);

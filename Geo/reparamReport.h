@@ -40,6 +40,9 @@ void recordParametrization(const std::vector<SPoint2> &uv,
 
 // The record of gf's current parametrization, or null
 const parametrizationRecord *findParametrization(const GFace *gf);
+// The record of the parametrization written into `uv`, or null
+const parametrizationRecord *
+findParametrization(const std::vector<SPoint2> &uv);
 
 // One line of the report
 struct faceReport {

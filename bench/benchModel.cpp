@@ -19,6 +19,10 @@ classifiedStl loadClassifiedStl(const char *file, int classifyMap)
                           verbosity ? std::atoi(verbosity) : 1);
   gmsh::option::setNumber("General.AbortOnError", 0);
   gmsh::option::setNumber("Mesh.CompoundParametrization", classifyMap);
+  // REPARAM_BENCH_SPLIT=1: ClassifySurfaces also splits what Reparam's maps
+  // flatten badly (Mesh.CompoundSplit)
+  const char *split = std::getenv("REPARAM_BENCH_SPLIT");
+  gmsh::option::setNumber("Mesh.CompoundSplit", split ? std::atoi(split) : 0);
   gmsh::merge(file);
 
   classifiedStl c;

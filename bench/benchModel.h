@@ -13,7 +13,8 @@ struct classifiedStl {
 };
 
 // gmsh::initialize() with the benchmarks' options (errors on stderr,
-// REPARAM_BENCH_VERBOSITY, keep going after errors), then merges and
+// REPARAM_BENCH_VERBOSITY, Mesh.CompoundSplit from REPARAM_BENCH_SPLIT,
+// keep going after errors), then merges and
 // classifies `file` into the current model; ClassifySurfaces checks its
 // patches with Mesh.CompoundParametrization = classifyMap
 classifiedStl loadClassifiedStl(const char *file, int classifyMap);

@@ -15,7 +15,9 @@
 #include "gmshTestEnvironment.h"
 #include "meanValueMap.h"
 #include "meshFidelity.h"
+#include "reparamOptions.h"
 #include "reparamOrient.h"
+#include "reparamReport.h"
 #include "patchAssembly.h"
 #include "triangleQuality.h"
 
@@ -353,4 +355,57 @@ TEST(gmshHook, remeshIsOrientedAlongTheInputByEveryElement)
   gmsh::option::setNumber("Mesh.CompoundParametrization", 0);
   EXPECT_FALSE(reparamOrientMeshedFace(gf));
   gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+}
+
+namespace {
+
+  // The ramp as a discrete surface of the current model, then
+  // ClassifySurfaces (no sharp edge: only the parametrization test splits);
+  // returns the maps the faces' parametrizations ended on
+  std::vector<int> classifiedRampMaps(int split)
+  {
+    gmsh::clear();
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+    gmsh::option::setNumber("Mesh.CompoundSplit", split);
+    testTriangulation ramp = helicoidStrip(120, 6, 1.5, 1., 2., 0.05);
+    int surface = gmsh::model::addDiscreteEntity(2);
+    std::vector<std::size_t> tags;
+    std::vector<double> coords;
+    for(std::size_t i = 0; i < ramp.points.size(); i++) {
+      tags.push_back(i + 1);
+      for(int c = 0; c < 3; c++) coords.push_back(ramp.points[i][c]);
+    }
+    gmsh::model::mesh::addNodes(2, surface, tags, coords);
+    std::vector<std::size_t> nodes;
+    for(const auto &t : ramp.triangles)
+      for(int n : t) nodes.push_back(n + 1);
+    gmsh::model::mesh::addElementsByType(surface, 2, {}, nodes);
+    gmsh::model::mesh::classifySurfaces(M_PI, true, true, M_PI);
+    gmsh::model::mesh::createGeometry();
+    gmsh::option::setNumber("Mesh.CompoundSplit", 0);
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+    std::vector<int> maps;
+    for(auto it = GModel::current()->firstFace();
+        it != GModel::current()->lastFace(); ++it) {
+      const parametrizationRecord *p = findParametrization(*it);
+      maps.push_back(p ? p->map : -1);
+    }
+    return maps;
+  }
+
+} // namespace
+
+TEST(gmshHook, compoundSplitCutsARampWhoseConformalMapsFold)
+{
+  // 1.5 turns: both conformal maps fold, the automatic chain ends on mean
+  // value; with Mesh.CompoundSplit the parts map conformally instead
+  std::vector<int> kept = classifiedRampMaps(0);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0], (int)compoundParametrization::meanValue);
+  std::vector<int> split = classifiedRampMaps(1);
+  EXPECT_GE(split.size(), 2u);
+  for(int map : split)
+    EXPECT_TRUE(map == (int)compoundParametrization::spectral ||
+                map == (int)compoundParametrization::conformal)
+      << map;
 }

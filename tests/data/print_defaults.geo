@@ -1,5 +1,5 @@
 // Prints Reparam's option defaults (CTest options.defaults)
-Printf("CompoundParametrization=%g CompoundRepair=%g CompoundFillHoles=%g CompoundReport=%g",
+Printf("CompoundParametrization=%g CompoundRepair=%g CompoundFillHoles=%g CompoundReport=%g CompoundSplit=%g",
        Mesh.CompoundParametrization, Mesh.CompoundRepair,
-       Mesh.CompoundFillHoles, Mesh.CompoundReport);
+       Mesh.CompoundFillHoles, Mesh.CompoundReport, Mesh.CompoundSplit);
 Printf(StrCat("CompoundReportFile='", Mesh.CompoundReportFile, "'"));
