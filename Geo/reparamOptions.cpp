@@ -40,32 +40,31 @@ double opt_mesh_compound_parametrization(OPT_ARGS_NUM)
   return o.parametrization;
 }
 
+// The on/off options: any nonzero value sets them
+static double onOffOption(bool &option, int action, double val)
+{
+  if(action & GMSH_SET) option = (val != 0.);
+  return option ? 1. : 0.;
+}
+
 double opt_mesh_compound_fill_holes(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) o.fillHoles = (val != 0.);
-  return o.fillHoles ? 1. : 0.;
+  return onOffOption(getReparamOptions().fillHoles, action, val);
 }
 
 double opt_mesh_compound_repair(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) o.repair = (val != 0.);
-  return o.repair ? 1. : 0.;
+  return onOffOption(getReparamOptions().repair, action, val);
 }
 
 double opt_mesh_compound_split(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) o.split = (val != 0.);
-  return o.split ? 1. : 0.;
+  return onOffOption(getReparamOptions().split, action, val);
 }
 
 double opt_mesh_compound_report(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) o.report = (val != 0.);
-  return o.report ? 1. : 0.;
+  return onOffOption(getReparamOptions().report, action, val);
 }
 
 std::string opt_mesh_compound_report_file(OPT_ARGS_STR)
