@@ -1,5 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <cmath>
 #include "GmshMessage.h"
 #include "Options.h"
 #include "reparamOptions.h"
@@ -60,6 +61,25 @@ double opt_mesh_compound_repair(OPT_ARGS_NUM)
 double opt_mesh_compound_split(OPT_ARGS_NUM)
 {
   return onOffOption(getReparamOptions().split, action, val);
+}
+
+double opt_mesh_compound_layout(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().layout, action, val);
+}
+
+double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) {
+    if(!(val >= 0.) || !std::isfinite(val))
+      Msg::Error("Mesh.CompoundNoiseSize must be a size >= 0 (got %g): "
+                 "keeping %g",
+                 val, o.noiseSize);
+    else
+      o.noiseSize = val;
+  }
+  return o.noiseSize;
 }
 
 double opt_mesh_compound_report(OPT_ARGS_NUM)

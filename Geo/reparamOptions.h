@@ -29,6 +29,12 @@ struct reparamOptions {
   // Mesh.CompoundSplit: ClassifySurfaces also splits the patches Reparam
   // cannot map, or maps only with mean value because its conformal maps fold
   bool split = false;
+  // Mesh.CompoundLayout: ClassifySurfaces{..., forParametrization = 1} lays
+  // out the patches with Reparam's own cleaning, cutting and verification
+  bool layout = true;
+  // Mesh.CompoundNoiseSize: the size below which feature patches are noise
+  // (0: the input's mean edge length)
+  double noiseSize = 0.;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none

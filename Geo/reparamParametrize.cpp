@@ -24,14 +24,19 @@
 #include "holeFilling.h"
 #include "mapChain.h"
 #include "reparamOptions.h"
+#include "reparamParametrize.h"
 #include "reparamReport.h"
 
 namespace {
 
   // Set while ClassifySurfaces asks whether a patch can be parametrized
-  // (reparamCheckParametrizable): a failure there splits the patch, it is not
-  // an error of the model
+  // (reparamCheckParametrizable, the patch layout): a failure there splits
+  // the patch, it is not an error of the model
   bool checkingPatch = false;
+  // Set while the patch layout tries a part: no log at all (a layout tries
+  // hundreds of parts), the reason of a failure kept for its own message
+  bool quiet = false;
+  std::string lastFailure;
 
   void failure(const char *format, ...)
   {
@@ -40,6 +45,8 @@ namespace {
     va_start(args, format);
     vsnprintf(message, sizeof(message), format, args);
     va_end(args);
+    lastFailure = message;
+    if(quiet) return;
     if(checkingPatch)
       Msg::Info("Reparam: %s", message);
     else
@@ -60,6 +67,7 @@ namespace {
 
   void logAttempt(const std::string &surface, const mapAttempt &a)
   {
+    if(quiet) return;
     const char *name = compoundParametrizationName(a.map);
     if(!a.error.ok()) {
       Msg::Info("Reparam: %s: %s map failed (%s), %.3g s", surface.c_str(),
@@ -140,7 +148,7 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     nodes.clear();
     return -1;
   }
-  if(patch.numReorientedTriangles)
+  if(patch.numReorientedTriangles && !quiet)
     Msg::Warning("Triangulation (%lu triangles) is not consistently oriented: "
                  "%lu triangles taken reversed for the parametrization",
                  triangles.size(), patch.numReorientedTriangles);
@@ -152,7 +160,7 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   int filledHoles = 0;
   if(getReparamOptions().fillHoles && patch.boundaryLoops.size() > 1) {
     holeFilling filling = fillHoles(patch);
-    if(filling.skippedHoles)
+    if(filling.skippedHoles && !quiet)
       Msg::Warning("Triangulation (%lu triangles): %d of its %lu holes cannot "
                    "be filled on their mean plane, left as free boundaries",
                    triangles.size(), filling.skippedHoles,
@@ -166,7 +174,7 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
         mapped = &extended;
         filledHoles = filling.filledHoles;
       }
-      else
+      else if(!quiet)
         Msg::Warning("Triangulation (%lu triangles): filling its holes gives "
                      "an invalid patch (%s), holes left as free boundaries",
                      triangles.size(), fillErr.what().c_str());
@@ -203,7 +211,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                   getReparamOptions().repair);
     for(const mapAttempt &a : fallback.attempts) logAttempt(surface, a);
     if(fallback.chosen >= 0 && fallback.bijective) {
-      Msg::Warning("%s map of %s is not one-to-one (%lu flipped triangles, "
+      if(!quiet)
+        Msg::Warning("%s map of %s is not one-to-one (%lu flipped triangles, "
                    "%lu folds): using the mean value map instead",
                    compoundParametrizationName(choice), surface.c_str(),
                    failed.flippedAfter, failed.foldsAfter);
@@ -226,14 +235,15 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
       nodes.clear();
       return -1;
     }
-    Msg::Warning(
+    if(!quiet)
+      Msg::Warning(
       "%s map of %s is not one-to-one (%lu flipped triangles, %lu "
       "folds): the mesh may be invalid; Mesh.CompoundParametrization "
       "= 6 tries the maps in turn",
       compoundParametrizationName(choice), surface.c_str(), chosen.flippedAfter,
       chosen.foldsAfter);
   }
-  else if(chosen.degenerateAfter)
+  else if(chosen.degenerateAfter && !quiet)
     Msg::Warning("%s map of %s: %lu triangles have a numerically degenerate "
                  "image",
                  compoundParametrizationName(chosen.map), surface.c_str(),
@@ -265,7 +275,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   record.solveTime = map.solveTime;
   record.checkTime = checkTime;
   recordParametrization(stl_vertices_uv, &record);
-  Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
+  if(!quiet)
+    Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
             "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "
             "%.3g s, checks %.3g s",
             compoundParametrizationName(chosen.map), nodes.size(),
@@ -317,4 +328,25 @@ int reparamCheckParametrizable(const std::vector<MTriangle *> &triangles,
         wound     ? "its conformal maps fold (Reparam)" :
                     "parametrized triangles are too small (Reparam)";
   return 2;
+}
+
+int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
+                              std::vector<SPoint2> &uv,
+                              std::vector<SPoint3> &xyz,
+                              std::vector<int> &tri, std::string &why)
+{
+  std::vector<MVertex *> nodes;
+  checkingPatch = quiet = true;
+  lastFailure.clear();
+  int done = reparamComputeParametrization(triangles, nodes, uv, xyz, tri);
+  checkingPatch = quiet = false;
+  const parametrizationRecord *record = findParametrization(uv);
+  if(done > 0 && record && !record->bijective) {
+    why = "its map is not one-to-one";
+    done = -1;
+  }
+  else if(done <= 0)
+    why = lastFailure;
+  recordParametrization(uv, nullptr); // local arrays: nothing to keep
+  return done;
 }

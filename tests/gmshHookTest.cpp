@@ -367,22 +367,13 @@ namespace {
     gmsh::clear();
     gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
     gmsh::option::setNumber("Mesh.CompoundSplit", split);
-    testTriangulation ramp = helicoidStrip(120, 6, 1.5, 1., 2., 0.05);
-    int surface = gmsh::model::addDiscreteEntity(2);
-    std::vector<std::size_t> tags;
-    std::vector<double> coords;
-    for(std::size_t i = 0; i < ramp.points.size(); i++) {
-      tags.push_back(i + 1);
-      for(int c = 0; c < 3; c++) coords.push_back(ramp.points[i][c]);
-    }
-    gmsh::model::mesh::addNodes(2, surface, tags, coords);
-    std::vector<std::size_t> nodes;
-    for(const auto &t : ramp.triangles)
-      for(int n : t) nodes.push_back(n + 1);
-    gmsh::model::mesh::addElementsByType(surface, 2, {}, nodes);
+    // Gmsh's split loop, which Mesh.CompoundSplit acts in
+    gmsh::option::setNumber("Mesh.CompoundLayout", 0);
+    addDiscreteSurface(helicoidStrip(120, 6, 1.5, 1., 2., 0.05));
     gmsh::model::mesh::classifySurfaces(M_PI, true, true, M_PI);
     gmsh::model::mesh::createGeometry();
     gmsh::option::setNumber("Mesh.CompoundSplit", 0);
+    gmsh::option::setNumber("Mesh.CompoundLayout", 1);
     gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
     std::vector<int> maps;
     for(auto it = GModel::current()->firstFace();

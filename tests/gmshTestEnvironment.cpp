@@ -82,3 +82,20 @@ std::string tutorialFile(const std::string &name)
 {
   return std::string(REPARAM_SOURCE_DIR) + "/tutorials/" + name;
 }
+
+int addDiscreteSurface(const testTriangulation &t)
+{
+  int surface = gmsh::model::addDiscreteEntity(2);
+  std::vector<std::size_t> tags;
+  std::vector<double> coords;
+  for(std::size_t i = 0; i < t.points.size(); i++) {
+    tags.push_back(i + 1);
+    for(int c = 0; c < 3; c++) coords.push_back(t.points[i][c]);
+  }
+  gmsh::model::mesh::addNodes(2, surface, tags, coords);
+  std::vector<std::size_t> nodes;
+  for(const auto &tri : t.triangles)
+    for(int n : tri) nodes.push_back(n + 1);
+  gmsh::model::mesh::addElementsByType(surface, 2, {}, nodes);
+  return surface;
+}

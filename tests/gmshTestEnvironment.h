@@ -37,4 +37,8 @@ double distanceUpToOrthogonal(const std::vector<SPoint2> &a,
 
 std::string tutorialFile(const std::string &name);
 
+// A new discrete surface of the current Gmsh model with the triangulation's
+// nodes (tagged from 1) and triangles; returns its tag
+int addDiscreteSurface(const testTriangulation &t);
+
 #endif

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include "testPatches.h"
 #include "triangleQuality.h"
@@ -220,4 +221,49 @@ testTriangulation jitteredGrid(int n, double amount, unsigned seed)
     p = SPoint3(p.x() + dx, p.y() + dy, 0.);
   }
   return t;
+}
+
+testTriangulation weld(testTriangulation t, double tol)
+{
+  std::map<std::array<long long, 3>, int> cells;
+  std::vector<int> index(t.points.size());
+  std::vector<SPoint3> kept;
+  for(std::size_t i = 0; i < t.points.size(); i++) {
+    std::array<long long, 3> key;
+    for(int c = 0; c < 3; c++) key[c] = std::llround(t.points[i][c] / tol);
+    auto it = cells.insert(std::make_pair(key, (int)kept.size()));
+    if(it.second) kept.push_back(t.points[i]);
+    index[i] = it.first->second;
+  }
+  std::vector<std::array<int, 3> > triangles;
+  for(auto tri : t.triangles) {
+    for(int &v : tri) v = index[v];
+    if(tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0])
+      triangles.push_back(tri);
+  }
+  t.points = kept;
+  t.triangles = triangles;
+  return t;
+}
+
+testTriangulation torus(int nAround, int nTube, double R, double r)
+{
+  testTriangulation t = rectangleGrid(nAround, nTube, 1., 1.);
+  for(auto &p : t.points) {
+    double phi = 2. * M_PI * p.x(), theta = 2. * M_PI * p.y();
+    double rho = R + r * std::cos(theta);
+    p = SPoint3(rho * std::cos(phi), rho * std::sin(phi), r * std::sin(theta));
+  }
+  return weld(t, 1e-9);
+}
+
+testTriangulation sphere(int nLongitude, int nLatitude)
+{
+  testTriangulation t = rectangleGrid(nLongitude, nLatitude, 1., 1.);
+  for(auto &p : t.points) {
+    double phi = 2. * M_PI * p.x(), theta = M_PI * p.y();
+    p = SPoint3(std::sin(theta) * std::cos(phi),
+                std::sin(theta) * std::sin(phi), -std::cos(theta));
+  }
+  return weld(t, 1e-9);
 }

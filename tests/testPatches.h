@@ -65,6 +65,15 @@ testTriangulation saddleStrip(int nx, int ny, double length, double amplitude);
 testTriangulation helicoidStrip(int nAround, int nAcross, double turns,
                                 double r1, double r2, double pitch);
 
+// Nodes closer than tol made one, triangles left with a repeated node dropped
+testTriangulation weld(testTriangulation t, double tol);
+
+// Closed surfaces: the torus of radii R > r (nAround x nTube cells, both
+// even), the unit sphere (a latitude-longitude grid of nLongitude x
+// nLatitude cells, welded at the poles)
+testTriangulation torus(int nAround, int nTube, double R, double r);
+testTriangulation sphere(int nLongitude, int nLatitude);
+
 discretePatch makePatchOrDie(const testTriangulation &t);
 
 // Twice the signed area of triangle t in the uv plane (uv: 2 values per node)

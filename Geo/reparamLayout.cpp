@@ -1,0 +1,205 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The hook ClassifySurfaces{..., forParametrization = 1} calls instead of
+// Gmsh's split loop (patches/0006): Reparam's patch layout (Mesh/patchLayout)
+// on the model's triangles and sharp edges, each part verified with the
+// parametrization CreateGeometry will compute for it; the layout is handed
+// back to Gmsh as the mesh edges between patches, from which Gmsh's own
+// classification builds exactly these patches as discrete surfaces.
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include "GModel.h"
+#include "MLine.h"
+#include "MTriangle.h"
+// after its prerequisites (it includes none)
+#include "GModelParametrize.h"
+#include "GmshMessage.h"
+#include "OS.h"
+#include "patchLayout.h"
+#include "reparamLayout.h"
+#include "reparamOptions.h"
+#include "reparamParametrize.h"
+#include "triangleAdjacency.h"
+
+double mapCrowding(const std::vector<SPoint2> &uv,
+                   const std::vector<SPoint3> &xyz,
+                   const std::vector<int> &triangleNodes)
+{
+  const std::size_t n = triangleNodes.size() / 3;
+  std::vector<double> uvArea(n), area(n);
+  double uvTotal = 0., total = 0.;
+  for(std::size_t t = 0; t < n; t++) {
+    const int a = triangleNodes[3 * t], b = triangleNodes[3 * t + 1],
+              c = triangleNodes[3 * t + 2];
+    uvArea[t] = std::fabs((uv[b].x() - uv[a].x()) * (uv[c].y() - uv[a].y()) -
+                          (uv[b].y() - uv[a].y()) * (uv[c].x() - uv[a].x()));
+    SVector3 normal = crossprod(SVector3(xyz[a], xyz[b]), SVector3(xyz[a], xyz[c]));
+    area[t] = normal.norm();
+    uvTotal += uvArea[t];
+    total += area[t];
+  }
+  if(!(uvTotal > 0.) || !(total > 0.)) return 0.;
+  double crowding = 1e300;
+  for(std::size_t t = 0; t < n; t++) {
+    // slivers of the input: their own 3D area says nothing of the map
+    if(area[t] < 1e-6 * total / n) continue;
+    crowding = std::min(crowding, (uvArea[t] / uvTotal) / (area[t] / total));
+  }
+  return crowding > 1e299 ? 1. : crowding;
+}
+
+namespace {
+
+  // The model's triangles as plain arrays, and Gmsh's objects behind them
+  struct modelTriangulation {
+    layoutMesh mesh;
+    std::vector<MTriangle *> triangles;
+    std::vector<MVertex *> nodes;
+  };
+
+  modelTriangulation collectTriangles(GModel *gm,
+                                      const std::vector<MLine *> &lines)
+  {
+    modelTriangulation m;
+    std::unordered_map<MVertex *, int> index;
+    auto nodeOf = [&](MVertex *v) {
+      auto it = index.insert(std::make_pair(v, (int)m.nodes.size()));
+      if(it.second) {
+        m.nodes.push_back(v);
+        m.mesh.points.push_back(v->point());
+      }
+      return it.first->second;
+    };
+    for(auto it = gm->firstFace(); it != gm->lastFace(); ++it)
+      for(MTriangle *t : (*it)->triangles) {
+        m.triangles.push_back(t);
+        m.mesh.triangles.push_back({nodeOf(t->getVertex(0)),
+                                    nodeOf(t->getVertex(1)),
+                                    nodeOf(t->getVertex(2))});
+      }
+    for(MLine *l : lines) {
+      auto a = index.find(l->getVertex(0)), b = index.find(l->getVertex(1));
+      if(a != index.end() && b != index.end())
+        m.mesh.featureEdges.push_back({a->second, b->second});
+    }
+    return m;
+  }
+
+  double meanEdgeLength(const layoutMesh &mesh)
+  {
+    triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
+    double sum = 0.;
+    for(const auto &e : adjacency.edges) sum += edgeLength(mesh, e);
+    return adjacency.edges.empty() ? 0. : sum / adjacency.edges.size();
+  }
+
+  double totalArea(const layoutMesh &mesh)
+  {
+    double sum = 0.;
+    for(std::size_t t = 0; t < mesh.triangles.size(); t++)
+      sum += triangleArea(mesh, (int)t);
+    return sum;
+  }
+
+} // namespace
+
+layoutParameters reparamLayoutParameters(const layoutMesh &mesh)
+{
+  // Noise at the mesh scale, with the mesh size unknown when
+  // ClassifySurfaces runs: the size is Mesh.CompoundNoiseSize, or the
+  // input's mean edge length. A patch is noise when it is also small against
+  // the whole surface, so that the few large faces of a coarse CAD
+  // triangulation (a box: 12 triangles) are never noise.
+  const double size = getReparamOptions().noiseSize > 0. ?
+                        getReparamOptions().noiseSize :
+                        meanEdgeLength(mesh);
+  const double bound = 0.01 * totalArea(mesh);
+  layoutParameters p;
+  p.noiseTriangles = 0;
+  p.noiseArea = std::min(2. * size * size, bound);
+  // a strip narrower than half the size, among the patches below the bound
+  p.noiseWidth = 0.5 * size;
+  p.noiseWidthMaxArea = bound;
+  return p;
+}
+
+partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
+{
+  std::vector<SPoint2> uv;
+  std::vector<SPoint3> xyz;
+  std::vector<int> nodes;
+  partCheck check;
+  int done = reparamTryParametrization(triangles, uv, xyz, nodes, check.reason);
+  if(done <= 0) {
+    check.ok = false;
+    // "Cannot parametrize triangulation (N triangles): why": the why
+    const std::string prefix = "Cannot parametrize triangulation";
+    std::size_t colon = check.reason.find("): ");
+    if(check.reason.compare(0, prefix.size(), prefix) == 0 &&
+       colon != std::string::npos)
+      check.reason = check.reason.substr(colon + 3);
+    return check;
+  }
+  // The map squeezes part of the patch into a sliver of the (u, v) plane:
+  // the planar mesher then works at the limit of its precision (aorta as one
+  // face: parts meshed far too coarsely, 12 % Hausdorff distance)
+  double crowding = mapCrowding(uv, xyz, nodes);
+  if(crowding < reparamMinCrowding) {
+    check.ok = false;
+    char s[128];
+    snprintf(s, sizeof(s), "its map crowds it (area ratio %.2g)", crowding);
+    check.reason = s;
+  }
+  return check;
+}
+
+int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
+{
+  const reparamOptions &options = getReparamOptions();
+  if(options.parametrization == (int)compoundParametrization::gmsh ||
+     !options.layout)
+    return 0;
+  double t0 = TimeOfDay();
+  modelTriangulation model = collectTriangles(gm, lines);
+  if(model.triangles.empty()) return 0;
+  layoutParameters parameters = reparamLayoutParameters(model.mesh);
+  partVerifier verify = [&model](const std::vector<int> &part) {
+    std::vector<MTriangle *> t(part.size());
+    for(std::size_t i = 0; i < part.size(); i++)
+      t[i] = model.triangles[part[i]];
+    return reparamVerifyPart(t);
+  };
+  layoutResult layout = computePatchLayout(model.mesh, parameters, verify);
+
+  // The mesh edges between patches, on the boundary or non-manifold: Gmsh's
+  // classification then grows exactly these patches (sharp edges merged away
+  // with noise are no longer cuts)
+  triangleAdjacency adjacency = makeTriangleAdjacency(model.mesh.triangles);
+  for(MLine *l : lines) delete l;
+  lines.clear();
+  for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+    const int n = adjacency.numTriangles((int)e);
+    const int *t = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
+    if(n == 2 && layout.patch[t[0]] == layout.patch[t[1]]) continue;
+    lines.push_back(new MLine(model.nodes[adjacency.edges[e][0]],
+                              model.nodes[adjacency.edges[e][1]]));
+  }
+
+  for(const layoutSplit &s : layout.splits)
+    Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "
+              "because %s",
+              s.depth, s.triangles, s.parts, s.reason.c_str());
+  Msg::Info("Reparam: layout of %lu triangles: %d feature patches, %d noise "
+            "patches merged (size %g), %d splits, %d patches (clean %.3g s, "
+            "split and verify %.3g s, total %.3g s)",
+            model.triangles.size(), layout.featurePatches, layout.mergedNoise,
+            std::sqrt(parameters.noiseArea / 2.), (int)layout.splits.size(),
+            layout.numPatches, layout.cleanTime, layout.splitTime,
+            TimeOfDay() - t0);
+  for(const auto &u : layout.unverified)
+    Msg::Warning("Reparam: a patch of the layout cannot be parametrized as it "
+                 "is (%s)", u.second.c_str());
+  return 1;
+}

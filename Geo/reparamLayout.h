@@ -1,0 +1,37 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Reparam's patch layout inside Gmsh: the parameters it takes from the
+// options and the input, and the verification of a part by the
+// parametrization CreateGeometry will compute. The hook itself,
+// reparamLayoutPatches, is declared in Gmsh's Geo/GModelParametrize.h
+// (patches/0006).
+
+#ifndef REPARAM_LAYOUT_H
+#define REPARAM_LAYOUT_H
+
+#include <vector>
+#include "SPoint2.h"
+#include "SPoint3.h"
+#include "patchLayout.h"
+
+class MTriangle;
+
+// A part is cut when its map puts a triangle's share of the (u, v) area
+// below this fraction of its share of the 3D area
+const double reparamMinCrowding = 1e-4;
+
+// Smallest ratio, over the triangles, of their share of the (u, v) area to
+// their share of the 3D area (input slivers left out): 1 for a map that
+// preserves area, small where the map squeezes the surface
+double mapCrowding(const std::vector<SPoint2> &uv,
+                   const std::vector<SPoint3> &xyz,
+                   const std::vector<int> &triangleNodes);
+
+// Noise scale and criteria from Mesh.CompoundNoiseSize and the input
+layoutParameters reparamLayoutParameters(const layoutMesh &mesh);
+
+// The part is kept if the map CreateGeometry will compute for it is
+// one-to-one and does not crowd it
+partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles);
+
+#endif

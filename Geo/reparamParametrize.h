@@ -1,0 +1,27 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// What Reparam's parametrization hook offers besides the hook itself
+// (declared in Gmsh's Geo/GModelParametrize.h by patches/0001).
+
+#ifndef REPARAM_PARAMETRIZE_H
+#define REPARAM_PARAMETRIZE_H
+
+#include <string>
+#include <vector>
+#include "SPoint2.h"
+#include "SPoint3.h"
+
+class MTriangle;
+
+// The parametrization CreateGeometry would compute for these triangles,
+// computed without a word in the log (the patch layout tries hundreds of
+// parts): 1 with the (u, v) and 3D points of the nodes and the triangles'
+// node indices when it is one-to-one, else -1 and the reason in `why`; 0
+// when Mesh.CompoundParametrization = 0 leaves it to Gmsh.
+int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
+                              std::vector<SPoint2> &uv,
+                              std::vector<SPoint3> &xyz,
+                              std::vector<int> &triangleNodes,
+                              std::string &why);
+
+#endif

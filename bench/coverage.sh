@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Whether the STL recipe gives a whole mesh: the README's recipe (Merge,
+# ClassifySurfaces{40, 1, 1, 180}, CreateGeometry, Mesh 2 with
+# Frontal-Delaunay, sized for about min(input triangles, 25000) triangles,
+# default options) in the built gmsh executable, one process per mesh and
+# map, with the automatic chain (Mesh.CompoundParametrization = 6) and Gmsh's
+# own map (0), on the tutorials' STL and every mesh of ../shared/data/meshes
+# (when present):
+#
+#   bench/coverage.sh [file.stl ...] > bench/RESULTS-coverage.md
+#       REPARAM_BENCH_TIMEOUT   seconds per run, default 120
+#       REPARAM_COVERAGE_MAPS   maps to run, default "6 0"
+#       REPARAM_COVERAGE_LOGS   folder to keep each run's gmsh log in (unset:
+#                               logs are dropped with the run's temp folder)
+#
+# Per mesh and map (bench/coverage.py): whole or not (no error, every
+# discrete surface meshed, as many boundary loops out as in), surfaces
+# meshed, boundary loops and non-manifold edges in and out, errors and
+# warnings in the log, Hausdorff distance (% of the diagonal) and inverted
+# elements from Mesh.CompoundReportFile, triangles, Reparam's layout (feature
+# patches, after cleaning, final patches, splits, seconds) and CPU time;
+# then per map the meshes whole and the total CPU time.
+set -uo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+source "$here/bench/common.sh"
+build=${REPARAM_BUILD_DIR:-$here/build}
+gmsh=$build/gmsh/gmsh
+[ -x "$gmsh" ] || gmsh=$(find "$build" -maxdepth 2 -name gmsh -type f -executable | head -n 1)
+[ -n "$gmsh" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
+
+benchMeshes "$@"
+
+logs=()
+[ -n "${REPARAM_COVERAGE_LOGS:-}" ] && logs=(--logs "$REPARAM_COVERAGE_LOGS")
+exec python3 "$here/bench/coverage.py" --gmsh "$gmsh" --repo "$here" \
+  --timeout "${REPARAM_BENCH_TIMEOUT:-120}" \
+  --maps "${REPARAM_COVERAGE_MAPS:-6 0}" ${logs[@]+"${logs[@]}"} "${meshes[@]}"

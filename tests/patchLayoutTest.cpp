@@ -1,0 +1,277 @@
+// Reparam - the patch layout of ClassifySurfaces: noise merged, parts cut
+// until verified, every part a disk the automatic map flattens one-to-one,
+// and the layout always ends
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <gtest/gtest.h>
+#include "GModel.h"
+#include "MTriangle.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
+#include "patchLayout.h"
+#include "reparamLayout.h"
+#include "triangleAdjacency.h"
+
+namespace {
+
+  layoutMesh meshOf(const testTriangulation &t)
+  {
+    layoutMesh m;
+    m.points = t.points;
+    m.triangles = t.triangles;
+    return m;
+  }
+
+  // The layout with Reparam's own verification (the automatic map on
+  // Gmsh's triangles), counting the parts it verified
+  layoutResult layoutWithMaps(const layoutMesh &mesh,
+                              const layoutParameters &parameters,
+                              int *verified = nullptr)
+  {
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+    testTriangulation t{mesh.points, mesh.triangles};
+    gmshTriangulation g(t);
+    int calls = 0;
+    partVerifier verify = [&](const std::vector<int> &part) {
+      calls++;
+      std::vector<MTriangle *> tris;
+      for(int i : part) tris.push_back(g.triangles[i]);
+      return reparamVerifyPart(tris);
+    };
+    layoutResult r = computePatchLayout(mesh, parameters, verify);
+    if(verified) *verified = calls;
+    return r;
+  }
+
+  // Every triangle in a patch, and every patch a disk (holes allowed):
+  // makeDiscretePatch accepts it as it is
+  void expectDiskPatches(const layoutMesh &mesh, const layoutResult &r)
+  {
+    std::vector<std::vector<int> > parts(r.numPatches);
+    for(std::size_t t = 0; t < r.patch.size(); t++) {
+      ASSERT_GE(r.patch[t], 0);
+      ASSERT_LT(r.patch[t], r.numPatches);
+      parts[r.patch[t]].push_back((int)t);
+    }
+    for(const auto &part : parts) {
+      ASSERT_FALSE(part.empty());
+      std::map<int, int> local;
+      std::vector<SPoint3> points;
+      std::vector<std::array<int, 3> > tris;
+      for(int t : part) {
+        std::array<int, 3> tri;
+        for(int k = 0; k < 3; k++) {
+          auto it = local.insert(
+            std::make_pair(mesh.triangles[t][k], (int)points.size()));
+          if(it.second) points.push_back(mesh.points[mesh.triangles[t][k]]);
+          tri[k] = it.first->second;
+        }
+        tris.push_back(tri);
+      }
+      discretePatch patch;
+      reparamError err = makeDiscretePatch(points, tris, patch);
+      EXPECT_TRUE(err.ok()) << err.what() << " (" << part.size()
+                            << " triangles)";
+    }
+    EXPECT_TRUE(r.unverified.empty());
+  }
+
+  // rectangleGrid(n, n) without the cells (i, j) listed
+  testTriangulation gridWithout(int n,
+                                const std::vector<std::array<int, 2> > &cells)
+  {
+    testTriangulation t = rectangleGrid(n, n, 1., 1.);
+    std::vector<std::array<int, 3> > kept;
+    for(std::size_t k = 0; k < t.triangles.size(); k++) {
+      int cell = (int)k / 2, i = cell % n, j = cell / n;
+      if(std::find(cells.begin(), cells.end(), std::array<int, 2>{i, j}) ==
+         cells.end())
+        kept.push_back(t.triangles[k]);
+    }
+    t.triangles = kept;
+    return t;
+  }
+
+  std::vector<std::array<int, 2> > edgesOf(const std::array<int, 3> &t)
+  {
+    return {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}};
+  }
+
+} // namespace
+
+TEST(patchLayout, noisePatchIsMergedAndItsPinchGoesWithIt)
+{
+  // rectangleGrid's cell (1, 0) is cut (odd) into (a, b, d) and (a, d, c):
+  // the second touches the boundary at node a = (1, 0) only, so as a
+  // patch of its own it pinches the patch around it there
+  layoutMesh mesh = meshOf(rectangleGrid(8, 8, 1., 1.));
+  const std::array<int, 3> spike = mesh.triangles[2 * 1 + 1];
+  ASSERT_EQ(spike[0], 1); // node (1, 0)
+  mesh.featureEdges = edgesOf(spike);
+  layoutParameters p;
+  p.noiseTriangles = 1;
+  layoutResult r = layoutWithMaps(mesh, p);
+  EXPECT_EQ(r.featurePatches, 2);
+  EXPECT_EQ(r.mergedNoise, 1);
+  EXPECT_EQ(r.cleanedPatches, 1);
+  EXPECT_EQ(r.numPatches, 1);
+  EXPECT_TRUE(r.splits.empty());
+  expectDiskPatches(mesh, r);
+
+  // Kept as a patch, it leaves the big one pinched: that one is cut
+  p.noiseTriangles = 0;
+  r = layoutWithMaps(mesh, p);
+  EXPECT_EQ(r.mergedNoise, 0);
+  EXPECT_GE(r.numPatches, 3);
+  EXPECT_LE(r.numPatches, 5);
+  EXPECT_FALSE(r.splits.empty());
+  EXPECT_NE(r.splits[0].reason.find("several boundary fans"),
+            std::string::npos)
+    << r.splits[0].reason;
+  expectDiskPatches(mesh, r);
+}
+
+TEST(patchLayout, pinchedAnnulusIsCutIntoDisks)
+{
+  // A hole whose corner (1, 1) is also a corner of the outer boundary
+  layoutMesh mesh =
+    meshOf(gridWithout(6, {{0, 0}, {1, 1}, {1, 2}, {2, 1}, {2, 2}}));
+  int verified = 0;
+  layoutResult r = layoutWithMaps(mesh, layoutParameters(), &verified);
+  EXPECT_EQ(r.featurePatches, 1);
+  EXPECT_GE(r.numPatches, 2);
+  EXPECT_LE(r.numPatches, 4);
+  EXPECT_LE(verified, 8);
+  expectDiskPatches(mesh, r);
+}
+
+TEST(patchLayout, closedSurfacesAreCutIntoDisks)
+{
+  for(const testTriangulation &t : {sphere(24, 12), torus(32, 12, 2., 0.6)}) {
+    layoutMesh mesh = meshOf(t);
+    int verified = 0;
+    layoutResult r = layoutWithMaps(mesh, layoutParameters(), &verified);
+    EXPECT_EQ(r.featurePatches, 1);
+    EXPECT_GE(r.numPatches, 2);
+    // a few bisections, not a triangle-by-triangle crumbling
+    EXPECT_LE(r.numPatches, 8);
+    EXPECT_LE(verified, 16);
+    expectDiskPatches(mesh, r);
+  }
+}
+
+TEST(patchLayout, twoTriangleClosedPiecesEnd)
+{
+  // pelvis_tlem2's pattern, on which Gmsh's split loop never ends: pieces
+  // of two triangles on the same three nodes, facing opposite ways
+  testTriangulation t = rectangleGrid(4, 4, 1., 1.);
+  layoutMesh mesh = meshOf(t);
+  const int pieces = 5;
+  for(int k = 0; k < pieces; k++) {
+    int n = (int)mesh.points.size();
+    mesh.points.push_back(SPoint3(2. + k, 0., 0.));
+    mesh.points.push_back(SPoint3(2.5 + k, 0., 0.));
+    mesh.points.push_back(SPoint3(2. + k, 0.5, 0.));
+    mesh.triangles.push_back({n, n + 1, n + 2});
+    mesh.triangles.push_back({n, n + 2, n + 1});
+    for(auto e : edgesOf({n, n + 1, n + 2})) mesh.featureEdges.push_back(e);
+  }
+  layoutParameters p;
+  p.noiseTriangles = 2;
+  layoutResult r = layoutWithMaps(mesh, p);
+  EXPECT_EQ(r.numPatches, 1 + 2 * pieces);
+  expectDiskPatches(mesh, r);
+}
+
+TEST(patchLayout, bisectionCutsAStripStraightAcross)
+{
+  layoutMesh mesh = meshOf(rectangleGrid(40, 4, 10., 1.));
+  triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
+  std::vector<int> all(mesh.triangles.size());
+  for(std::size_t i = 0; i < all.size(); i++) all[i] = (int)i;
+  std::vector<char> side = bisectPart(mesh, adjacency, all);
+  double cut = 0., area[2] = {0., 0.};
+  for(std::size_t t = 0; t < all.size(); t++)
+    area[(int)side[t]] += triangleArea(mesh, (int)t);
+  for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+    if(adjacency.numTriangles((int)e) != 2) continue;
+    const int *tris = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
+    if(side[tris[0]] != side[tris[1]])
+      cut += edgeLength(mesh, adjacency.edges[e]);
+  }
+  // the shortest cut leaving a tenth of the area: one grid line across
+  EXPECT_NEAR(cut, 1., 1e-12);
+  EXPECT_GE(std::min(area[0], area[1]), 1. - 1e-12);
+  EXPECT_EQ(partComponents(adjacency, all, all.size()).size(), 1u);
+}
+
+TEST(patchLayout, coarseCadFacesAreNotNoise)
+{
+  // A box of 12 triangles, its 12 edges sharp: 6 faces, none of them noise
+  // although each is as small as the mean edge length squared
+  layoutMesh mesh;
+  for(int i = 0; i < 8; i++)
+    mesh.points.push_back(SPoint3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for(const auto &q : quads) {
+    mesh.triangles.push_back({q[0], q[1], q[2]});
+    mesh.triangles.push_back({q[0], q[2], q[3]});
+    for(int k = 0; k < 4; k++) mesh.featureEdges.push_back({q[k], q[(k + 1) % 4]});
+  }
+  triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
+  std::vector<char> feature(adjacency.edges.size(), 0);
+  for(const auto &f : mesh.featureEdges) feature[adjacency.find(f[0], f[1])] = 1;
+  int n = 0;
+  std::vector<int> patch = featurePatches(mesh, adjacency, feature, n);
+  EXPECT_EQ(n, 6);
+  gmsh::option::setNumber("Mesh.CompoundNoiseSize", 0);
+  layoutParameters p = reparamLayoutParameters(mesh);
+  EXPECT_EQ(mergeNoisePatches(mesh, adjacency, p, patch, n), 0);
+  EXPECT_EQ(n, 6);
+  // the same faces among 10000 others are noise: 1 % of the area
+  p.noiseArea = 2.;
+  EXPECT_EQ(mergeNoisePatches(mesh, adjacency, p, patch, n), 5);
+  EXPECT_EQ(n, 1);
+}
+
+TEST(patchLayout, classifySurfacesMeshesClosedSurfacesWhole)
+{
+  for(const testTriangulation &t : {sphere(48, 24), torus(64, 16, 2., 0.6)}) {
+    gmsh::clear();
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+    addDiscreteSurface(t);
+    gmsh::logger::start();
+    gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+    gmsh::model::mesh::createGeometry();
+    gmsh::model::mesh::generate(2);
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    gmsh::logger::stop();
+    for(const auto &l : log) EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+    gmsh::vectorpair faces;
+    gmsh::model::getEntities(faces, 2);
+    EXPECT_GE(faces.size(), 2u);
+    std::map<std::pair<std::size_t, std::size_t>, int> edges;
+    for(const auto &f : faces) {
+      std::vector<std::size_t> tags, nodes;
+      gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
+      EXPECT_GT(tags.size(), 0u) << "surface " << f.second << " unmeshed";
+      for(std::size_t i = 0; i < nodes.size(); i += 3)
+        for(int k = 0; k < 3; k++) {
+          std::size_t a = nodes[i + k], b = nodes[i + (k + 1) % 3];
+          edges[std::make_pair(std::min(a, b), std::max(a, b))]++;
+        }
+    }
+    // closed: every edge of the new mesh has two triangles (no hole)
+    int open = 0;
+    for(const auto &e : edges) open += e.second != 2;
+    EXPECT_EQ(open, 0);
+  }
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+}
