@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include "Context.h"
 #include "GModel.h"
 #include "MLine.h"
 #include "MTriangle.h"
@@ -87,14 +88,6 @@ namespace {
     return m;
   }
 
-  double meanEdgeLength(const layoutMesh &mesh)
-  {
-    triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
-    double sum = 0.;
-    for(const auto &e : adjacency.edges) sum += edgeLength(mesh, e);
-    return adjacency.edges.empty() ? 0. : sum / adjacency.edges.size();
-  }
-
   double totalArea(const layoutMesh &mesh)
   {
     double sum = 0.;
@@ -108,14 +101,19 @@ namespace {
 layoutParameters reparamLayoutParameters(const layoutMesh &mesh)
 {
   // Noise at the mesh scale, with the mesh size unknown when
-  // ClassifySurfaces runs: the size is Mesh.CompoundNoiseSize, or the
-  // input's mean edge length. A patch is noise when it is also small against
-  // the whole surface, so that the few large faces of a coarse CAD
-  // triangulation (a box: 12 triangles) are never noise.
-  const double size = getReparamOptions().noiseSize > 0. ?
-                        getReparamOptions().noiseSize :
-                        meanEdgeLength(mesh);
-  const double bound = 0.01 * totalArea(mesh);
+  // ClassifySurfaces runs: the size is Mesh.CompoundNoiseSize, or the edge
+  // of the uniform mesh of equilateral triangles with as many triangles as
+  // the input (on scans about their mean edge; on CAD triangulations far
+  // below it, whose long slivers say nothing of the size of their faces). A
+  // patch is noise when it is also small against the whole surface, so that
+  // the few large faces of a coarse CAD triangulation (a box: 12 triangles)
+  // are never noise.
+  const double area = totalArea(mesh);
+  const double size =
+    getReparamOptions().noiseSize > 0. ?
+      getReparamOptions().noiseSize :
+      std::sqrt(4. * area / (std::sqrt(3.) * mesh.triangles.size()));
+  const double bound = 0.01 * area;
   layoutParameters p;
   p.noiseTriangles = 0;
   p.noiseArea = std::min(2. * size * size, bound);
@@ -165,7 +163,12 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   modelTriangulation model = collectTriangles(gm, lines);
   if(model.triangles.empty()) return 0;
   layoutParameters parameters = reparamLayoutParameters(model.mesh);
-  partVerifier verify = [&model](const std::vector<int> &part) {
+  const int maxTriangles = CTX::instance()->mesh.reparamMaxTriangles;
+  partVerifier verify = [&model, maxTriangles](const std::vector<int> &part) {
+    // Gmsh's own bound on a patch, Mesh.ReparamMaxTriangles
+    if(maxTriangles > 1 && (int)part.size() > maxTriangles)
+      return partCheck{false, "it has more than Mesh.ReparamMaxTriangles = " +
+                                std::to_string(maxTriangles) + " triangles"};
     std::vector<MTriangle *> t(part.size());
     for(std::size_t i = 0; i < part.size(); i++)
       t[i] = model.triangles[part[i]];

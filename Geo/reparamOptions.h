@@ -33,7 +33,7 @@ struct reparamOptions {
   // out the patches with Reparam's own cleaning, cutting and verification
   bool layout = true;
   // Mesh.CompoundNoiseSize: the size below which feature patches are noise
-  // (0: the input's mean edge length)
+  // (0: the edge of a uniform mesh with as many triangles as the input)
   double noiseSize = 0.;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;

@@ -85,6 +85,45 @@ namespace {
               a.flippedAfter, a.foldsAfter, a.mapTime, a.checkTime);
   }
 
+  // canonical[i]: the rank of nodes[i] among the nodes sorted by number
+  std::vector<int> canonicalNodeOrder(const std::vector<MVertex *> &nodes)
+  {
+    std::vector<int> order(nodes.size());
+    for(std::size_t i = 0; i < nodes.size(); i++) order[i] = (int)i;
+    std::sort(order.begin(), order.end(), [&nodes](int a, int b) {
+      return nodes[a]->getNum() < nodes[b]->getNum();
+    });
+    std::vector<int> canonical(nodes.size());
+    for(std::size_t k = 0; k < order.size(); k++) canonical[order[k]] = (int)k;
+    return canonical;
+  }
+
+  std::vector<SPoint3> permutedPoints(const std::vector<SPoint3> &points,
+                                      const std::vector<int> &canonical)
+  {
+    std::vector<SPoint3> p(points.size());
+    for(std::size_t i = 0; i < points.size(); i++) p[canonical[i]] = points[i];
+    return p;
+  }
+
+  // The triangles in the order of their Gmsh numbers, on canonical nodes
+  std::vector<std::array<int, 3> >
+  canonicalTriangles(const std::vector<MTriangle *> &triangles,
+                     const std::vector<std::array<int, 3> > &tris,
+                     const std::vector<int> &canonical)
+  {
+    std::vector<int> order(tris.size());
+    for(std::size_t t = 0; t < tris.size(); t++) order[t] = (int)t;
+    std::sort(order.begin(), order.end(), [&triangles](int a, int b) {
+      return triangles[a]->getNum() < triangles[b]->getNum();
+    });
+    std::vector<std::array<int, 3> > sorted(tris.size());
+    for(std::size_t k = 0; k < order.size(); k++)
+      for(int j = 0; j < 3; j++)
+        sorted[k][j] = canonical[tris[order[k]][j]];
+    return sorted;
+  }
+
 } // namespace
 
 int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
@@ -129,15 +168,22 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   for(std::size_t t = 0; t < tris.size(); t++)
     for(int j = 0; j < 3; j++) triangleNodes[3 * t + j] = tris[t][j];
 
+  // The maps work on the nodes and triangles sorted by their Gmsh numbers:
+  // the same triangles given in another order (the patch layout verifies a
+  // part, CreateGeometry later gets it in the order of Gmsh's flood fill)
+  // then get the same (u, v), flips and folds to the last bit
+  std::vector<int> canonical = canonicalNodeOrder(nodes);
   discretePatch patch;
-  reparamError err =
-    makeDiscretePatch(std::move(points), std::move(tris), patch);
+  reparamError err = makeDiscretePatch(
+    permutedPoints(points, canonical),
+    canonicalTriangles(triangles, tris, canonical), patch);
   double t1 = TimeOfDay();
   if(!err.ok()) {
     std::string where;
     if(err.node >= 0 && err.node < (int)nodes.size()) {
       // the patch numbers nodes from 0: tell the user Gmsh's tag and where
-      MVertex *v = nodes[err.node];
+      MVertex *v = nodes[std::find(canonical.begin(), canonical.end(),
+                                   err.node) - canonical.begin()];
       char s[128];
       snprintf(s, sizeof(s), " at node %lu (%g, %g, %g)", v->getNum(), v->x(),
                v->y(), v->z());
@@ -251,10 +297,11 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   const patchMap &map = result.map;
 
   stl_triangles = std::move(triangleNodes);
-  stl_vertices_xyz = patch.points;
+  stl_vertices_xyz = std::move(points);
   stl_vertices_uv.resize(nodes.size());
   for(std::size_t i = 0; i < nodes.size(); i++)
-    stl_vertices_uv[i] = SPoint2(map.uv[2 * i], map.uv[2 * i + 1]);
+    stl_vertices_uv[i] =
+      SPoint2(map.uv[2 * canonical[i]], map.uv[2 * canonical[i] + 1]);
   double checkTime = 0.;
   for(const mapAttempt &a : result.attempts) checkTime += a.checkTime;
   parametrizationRecord record;

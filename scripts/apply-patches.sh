@@ -15,14 +15,28 @@ cat /dev/null "$dir"/*.patch > "$new" 2>/dev/null || true
 if [ -f "$stamp" ] && cmp -s "$stamp" "$new"; then
   exit 0
 fi
+# Each applied patch is also kept in $applied, to be reverted last first:
+# two patches may change the same file, the later one on top of the other
+applied=$src/.reparam-applied.d
 if [ -f "$stamp" ] && [ -s "$stamp" ]; then
   echo "-- Reverting the previous Reparam patch series in $src"
-  patch -d "$src" -p1 -R -s -N --no-backup-if-mismatch < "$stamp"
+  if [ -d "$applied" ]; then
+    for p in $(ls -r "$applied"/*.patch); do
+      patch -d "$src" -p1 -R -s -N --no-backup-if-mismatch < "$p"
+    done
+  else
+    # a tree patched before the copies were kept: its patches changed
+    # different files, so their concatenation reverts in one go
+    patch -d "$src" -p1 -R -s -N --no-backup-if-mismatch < "$stamp"
+  fi
 fi
 rm -f "$stamp"
+rm -rf "$applied"
+mkdir -p "$applied"
 for p in "$dir"/*.patch; do
   [ -e "$p" ] || continue
   echo "-- Applying $(basename "$p")"
   patch -d "$src" -p1 -s -N --no-backup-if-mismatch < "$p"
+  cp "$p" "$applied/"
 done
 cp "$new" "$stamp"
