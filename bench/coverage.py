@@ -348,6 +348,10 @@ def measure(gmsh, stl, map_value, input_mesh, timeout, logs):
         if logs:  # kept to look into a run that is not whole
             name = "%s-map%d.log" % (mesh_name(stl), map_value)
             shutil.copy(log, os.path.join(logs, name))
+            shutil.copy(geo, os.path.join(logs, name[:-4] + ".geo"))
+            if os.path.exists(os.path.join(folder, "out.msh")):
+                shutil.copy(os.path.join(folder, "out.msh"),
+                            os.path.join(logs, name[:-4] + ".msh"))
     row["whole"] = is_whole(row)
     return row
 

@@ -1,0 +1,86 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <map>
+#include "MTriangle.h"
+#include "reparamUvLocate.h"
+
+namespace {
+
+  // The boundary triangles of the last triangulation asked about (a face is
+  // meshed at once, so the cache hits); one per thread, as faces may be
+  // meshed in parallel
+  struct boundaryCache {
+    const MTriangle *data = nullptr;
+    std::size_t size = 0;
+    std::vector<int> boundary;
+  };
+
+  std::vector<int> boundaryTriangles(const std::vector<MTriangle> &t2d)
+  {
+    std::map<std::pair<const MVertex *, const MVertex *>, int> count;
+    auto key = [](const MVertex *a, const MVertex *b) {
+      return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+    };
+    for(const MTriangle &t : t2d)
+      for(int k = 0; k < 3; k++)
+        count[key(t.getVertex(k), t.getVertex((k + 1) % 3))]++;
+    std::vector<int> boundary;
+    for(std::size_t i = 0; i < t2d.size(); i++)
+      for(int k = 0; k < 3; k++)
+        if(count[key(t2d[i].getVertex(k), t2d[i].getVertex((k + 1) % 3))] ==
+           1) {
+          boundary.push_back((int)i);
+          break;
+        }
+    return boundary;
+  }
+
+  // Closest point to (u, v) on segment (a, b); squared distance
+  double closestOnSegment(double u, double v, double ax, double ay, double bx,
+                          double by, double &cu, double &cv)
+  {
+    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    double s = len2 > 0. ? ((u - ax) * dx + (v - ay) * dy) / len2 : 0.;
+    s = std::min(1., std::max(0., s));
+    cu = ax + s * dx;
+    cv = ay + s * dy;
+    return (u - cu) * (u - cu) + (v - cv) * (v - cv);
+  }
+
+} // namespace
+
+MTriangle *reparamClosestUvTriangle(const std::vector<MTriangle> &t2d,
+                                    double &u, double &v)
+{
+  if(t2d.empty()) return nullptr;
+  thread_local boundaryCache cache;
+  if(cache.data != t2d.data() || cache.size != t2d.size()) {
+    cache.data = t2d.data();
+    cache.size = t2d.size();
+    cache.boundary = boundaryTriangles(t2d);
+  }
+  // a point outside the image is closest to a boundary edge, hence to a
+  // boundary triangle (a point on its other edges is inside or on another
+  // boundary triangle's edge)
+  double best = 1e300, bu = u, bv = v;
+  int bestTriangle = -1;
+  for(int i : cache.boundary) {
+    const MTriangle &t = t2d[i];
+    for(int k = 0; k < 3; k++) {
+      const MVertex *a = t.getVertex(k), *b = t.getVertex((k + 1) % 3);
+      double cu, cv;
+      double d = closestOnSegment(u, v, a->x(), a->y(), b->x(), b->y(), cu, cv);
+      if(d < best) {
+        best = d;
+        bu = cu;
+        bv = cv;
+        bestTriangle = i;
+      }
+    }
+  }
+  if(bestTriangle < 0) return nullptr;
+  u = bu;
+  v = bv;
+  return const_cast<MTriangle *>(&t2d[bestTriangle]);
+}
