@@ -392,6 +392,15 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
     why = "its map is not one-to-one";
     done = -1;
   }
+  else if(done > 0 && record && getReparamOptions().fillHoles &&
+          record->filledHoles < record->holes) {
+    // a loop that cannot be filled on its mean plane winds around a tube:
+    // left free, it leaves a conformal map badly squeezed (gmsh2x_linkrod2:
+    // Hausdorff 10 % of the face's size), and a cut across the tube removes
+    // it
+    why = "a hole of it cannot be filled on its mean plane";
+    done = -1;
+  }
   else if(done <= 0)
     why = lastFailure;
   recordParametrization(uv, nullptr); // local arrays: nothing to keep
