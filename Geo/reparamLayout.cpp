@@ -118,8 +118,11 @@ layoutParameters reparamLayoutParameters(const layoutMesh &mesh)
   p.noiseTriangles = 0;
   p.noiseArea = std::min(2. * size * size, bound);
   // a strip narrower than half the size, among the patches below the bound
-  p.noiseWidth = 0.5 * size;
+  p.noiseWidth = 0.125 * size;
   p.noiseWidthMaxArea = bound;
+  if(getenv("REPARAM_X_AREA")) p.noiseArea = std::min(atof(getenv("REPARAM_X_AREA")) * size * size, bound);
+  if(getenv("REPARAM_X_WIDTH")) p.noiseWidth = atof(getenv("REPARAM_X_WIDTH")) * size;
+  if(getenv("REPARAM_X_TRI")) p.noiseTriangles = atoi(getenv("REPARAM_X_TRI"));
   return p;
 }
 

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <mutex>
 #include "GFace.h"
 #include "GModel.h"
@@ -128,6 +129,29 @@ std::vector<int> unparametrizedFaces(GModel *m)
   return tags;
 }
 
+namespace {
+
+  // The faces' meshes against their inputs taken together, when every
+  // measured face still has the mesh measured (else null: the total then
+  // combines the faces' own distances)
+  std::unique_ptr<meshFidelity>
+  wholeModelDistances(GModel *m, const std::vector<faceReport> &reports)
+  {
+    std::vector<surfaceMesh> inputs, outputs;
+    for(const faceReport &r : reports) {
+      if(!r.hasInput) continue;
+      GFace *gf = m->getFaceByTag(r.tag);
+      if(!gf || !sameMesh(r, gf)) return nullptr;
+      inputs.push_back(inputTriangulationOf(gf));
+      outputs.push_back(surfaceMeshOf(gf));
+    }
+    if(inputs.size() < 2) return nullptr; // one face: its own distances
+    return std::unique_ptr<meshFidelity>(
+      new meshFidelity(compareDistancesToInput(inputs, outputs)));
+  }
+
+} // namespace
+
 void reparamReportMeshedModel(GModel *m)
 {
   std::vector<faceReport> &reports = pendingFaceReports();
@@ -160,8 +184,9 @@ void reparamReportMeshedModel(GModel *m)
                                      r.fidelity.elements - r.fidelity.inverted);
     r.oriented = true;
   }
+  std::unique_ptr<meshFidelity> whole = wholeModelDistances(m, reports);
   if(!reports.empty())
-    for(const std::string &line : reportTable(reports))
+    for(const std::string &line : reportTable(reports, whole.get()))
       Msg::Info("Reparam: %s", line.c_str());
   const std::string &file = getReparamOptions().reportFile;
   if(!file.empty()) {
@@ -170,7 +195,7 @@ void reparamReportMeshedModel(GModel *m)
       Msg::Error("Cannot write Mesh.CompoundReportFile '%s': %s", file.c_str(),
                  std::strerror(errno));
     else {
-      std::string json = reportJson(reports, missing);
+      std::string json = reportJson(reports, missing, whole.get());
       fwrite(json.data(), 1, json.size(), fp);
       fclose(fp);
       Msg::Info("Reparam: report written to '%s'", file.c_str());

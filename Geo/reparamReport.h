@@ -81,9 +81,13 @@ void reparamReportMeshedModel(GModel *m);
 std::vector<int> unparametrizedFaces(GModel *m);
 
 // The table lines and the JSON text of `reports` (for the hook and tests);
-// the JSON lists `unmeshed` faces too
-std::vector<std::string> reportTable(const std::vector<faceReport> &reports);
+// the JSON lists `unmeshed` faces too. The total's distances are `whole`'s
+// when given (the faces' meshes against their inputs taken together), else
+// the largest and the element-weighted mean of the faces'.
+std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
+                                     const meshFidelity *whole = nullptr);
 std::string reportJson(const std::vector<faceReport> &reports,
-                       const std::vector<int> &unmeshed = {});
+                       const std::vector<int> &unmeshed = {},
+                       const meshFidelity *whole = nullptr);
 
 #endif

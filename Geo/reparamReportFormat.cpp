@@ -36,7 +36,8 @@ namespace {
   }
 
   // The sums and extremes of the total line, in the same struct as a face
-  faceReport total(const std::vector<faceReport> &reports)
+  faceReport total(const std::vector<faceReport> &reports,
+                   const meshFidelity *whole)
   {
     faceReport t;
     double kappaSum = 0., belowSum = 0., etaSum = 0., tauLogSum = 0.,
@@ -95,6 +96,10 @@ namespace {
       t.fidelity.hausdorff = absoluteHausdorff;
       t.fidelity.meanDistance = sampled ? meanDistanceSum / sampled : 0.;
       t.fidelity.diagonal = t.inputBox.empty() ? 0. : t.inputBox.diag();
+      if(whole) {
+        t.fidelity.hausdorff = whole->hausdorff;
+        t.fidelity.meanDistance = whole->meanDistance;
+      }
     }
     return t;
   }
@@ -174,7 +179,8 @@ namespace {
 
 } // namespace
 
-std::vector<std::string> reportTable(const std::vector<faceReport> &reports)
+std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
+                                     const meshFidelity *whole)
 {
   std::vector<std::string> lines;
   char header[512];
@@ -191,12 +197,13 @@ std::vector<std::string> reportTable(const std::vector<faceReport> &reports)
     lines.push_back(tableLine(std::to_string(r.tag), mapColumn(r), r));
   char surfaces[32];
   snprintf(surfaces, sizeof(surfaces), "%lu surf.", reports.size());
-  lines.push_back(tableLine("total", surfaces, total(reports)));
+  lines.push_back(tableLine("total", surfaces, total(reports, whole)));
   return lines;
 }
 
 std::string reportJson(const std::vector<faceReport> &reports,
-                       const std::vector<int> &unmeshed)
+                       const std::vector<int> &unmeshed,
+                       const meshFidelity *whole)
 {
   std::string s = "{\n  \"parametrizationOption\": " +
                   std::to_string(getReparamOptions().parametrization) +
@@ -226,6 +233,6 @@ std::string reportJson(const std::vector<faceReport> &reports,
   for(std::size_t i = 0; i < unmeshed.size(); i++)
     s += (i ? ", " : "") + std::to_string(unmeshed[i]);
   s += "],\n  \"total\": {\"surfaces\": " + std::to_string(reports.size()) +
-       ", " + jsonFields(total(reports)) + "}\n}\n";
+       ", " + jsonFields(total(reports, whole)) + "}\n}\n";
   return s;
 }

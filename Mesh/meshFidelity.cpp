@@ -135,6 +135,55 @@ surfaceMesh inputTriangulationOf(const GFace *gf)
   return m;
 }
 
+namespace {
+
+  // Hausdorff: the largest of both sides; mean: the mean of both means
+  void combine(const oneSided &there, const oneSided &back, meshFidelity &f)
+  {
+    f.hausdorff = std::max(there.max, back.max);
+    f.meanDistance =
+      0.5 * (there.sum / std::max<std::size_t>(1, there.samples) +
+             back.sum / std::max<std::size_t>(1, back.samples));
+  }
+
+  // The meshes as one (nodes repeated where faces meet: harmless for
+  // distances), quadrangles cut in two triangles
+  surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes)
+  {
+    surfaceMesh u;
+    for(const surfaceMesh &m : meshes) {
+      const int offset = (int)u.points.size();
+      u.points.insert(u.points.end(), m.points.begin(), m.points.end());
+      for(const auto &t : m.triangles)
+        u.triangles.push_back({{t[0] + offset, t[1] + offset, t[2] + offset}});
+      for(const auto &q : m.quadrangles) {
+        u.triangles.push_back({{q[0] + offset, q[1] + offset, q[2] + offset}});
+        u.triangles.push_back({{q[0] + offset, q[2] + offset, q[3] + offset}});
+      }
+    }
+    return u;
+  }
+
+} // namespace
+
+meshFidelity compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
+                                     const std::vector<surfaceMesh> &outputs)
+{
+  meshFidelity f;
+  surfaceMesh input = unionAsTriangles(inputs);
+  surfaceMesh output = unionAsTriangles(outputs);
+  f.elements = output.triangles.size();
+  SBoundingBox3d box;
+  for(const SPoint3 &p : input.points) box += p;
+  if(!input.points.empty()) f.diagonal = box.diag();
+  if(input.triangles.empty() || output.triangles.empty()) return f;
+  closestTriangleSearch onInput(input.points, input.triangles);
+  closestTriangleSearch onOutput(output.points, output.triangles);
+  combine(distances(output, input, onInput), distances(input, output, onOutput),
+          f);
+  return f;
+}
+
 meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output)
 {
   meshFidelity f;
@@ -157,10 +206,7 @@ meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output)
   outputAsTriangles.triangles = std::move(outputTriangles);
   closestTriangleSearch onOutput(outputAsTriangles.points,
                                  outputAsTriangles.triangles);
-  oneSided back = distances(input, outputAsTriangles, onOutput);
-  f.hausdorff = std::max(there.max, back.max);
-  f.meanDistance = 0.5 * (there.sum / std::max<std::size_t>(1, there.samples) +
-                          back.sum / std::max<std::size_t>(1, back.samples));
+  combine(there, distances(input, outputAsTriangles, onOutput), f);
   return f;
 }
 

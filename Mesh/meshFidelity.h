@@ -44,6 +44,15 @@ struct meshFidelity {
 meshFidelity compareToInput(const surfaceMesh &input,
                             const surfaceMesh &output);
 
+// Only the two-sided distances (no inverted count) of several meshed faces
+// against their inputs taken together: the whole model's Hausdorff
+// distance. Face by face, an input node on a curve between two faces is as
+// far from its own face's mesh as the curve's chords are from the input's
+// zig-zag along it, while the neighbour's mesh covers it (tooth: 0.79 %
+// face by face, 0.24 % for the whole).
+meshFidelity compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
+                                     const std::vector<surfaceMesh> &outputs);
+
 // Only meshFidelity::inverted (N + 1 closest-triangle searches per element
 // of N corners)
 std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output);

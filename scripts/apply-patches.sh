@@ -18,10 +18,11 @@ fi
 # Each applied patch is also kept in $applied, to be reverted last first:
 # two patches may change the same file, the later one on top of the other
 applied=$src/.reparam-applied.d
-if [ -f "$stamp" ] && [ -s "$stamp" ]; then
+if [ -d "$applied" ] || { [ -f "$stamp" ] && [ -s "$stamp" ]; }; then
+  # (a copy without a stamp: a series that failed half-way, reverted too)
   echo "-- Reverting the previous Reparam patch series in $src"
   if [ -d "$applied" ]; then
-    for p in $(ls -r "$applied"/*.patch); do
+    for p in $(ls -r "$applied"/*.patch 2>/dev/null); do
       patch -d "$src" -p1 -R -s -N --no-backup-if-mismatch < "$p"
     done
   else
@@ -36,6 +37,9 @@ mkdir -p "$applied"
 for p in "$dir"/*.patch; do
   [ -e "$p" ] || continue
   echo "-- Applying $(basename "$p")"
+  # all or nothing: a patch that does not apply leaves no hunk behind
+  patch -d "$src" -p1 -s -N --dry-run < "$p" > /dev/null ||
+    { echo "-- $(basename "$p") does not apply to $src" >&2; exit 1; }
   patch -d "$src" -p1 -s -N --no-backup-if-mismatch < "$p"
   cp "$p" "$applied/"
 done

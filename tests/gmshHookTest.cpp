@@ -400,3 +400,26 @@ TEST(gmshHook, compoundSplitCutsARampWhoseConformalMapsFold)
                 map == (int)compoundParametrization::conformal)
       << map;
 }
+
+TEST(gmshHook, mapDoesNotDependOnTheTrianglesOrder)
+{
+  // The patch layout verifies a part, CreateGeometry later gets the same
+  // triangles in another order: every map must give the same (u, v) to the
+  // last bit, else a part verified one-to-one may fold at CreateGeometry
+  testTriangulation tt = jitteredGrid(12, 0.8, 7);
+  tt = liftPlanar(tt, 0.4);
+  gmshTriangulation t(tt);
+  std::vector<MTriangle *> reversed(t.triangles.rbegin(), t.triangles.rend());
+  for(int map : {3, 4, 5, 6}) {
+    gmshParametrization a = parametrizeWith(t.triangles, map);
+    gmshParametrization b = parametrizeWith(reversed, map);
+    ASSERT_TRUE(a.ok && b.ok) << map;
+    std::map<MVertex *, SPoint2> uv;
+    for(std::size_t i = 0; i < a.nodes.size(); i++) uv[a.nodes[i]] = a.uv[i];
+    ASSERT_EQ(uv.size(), b.nodes.size());
+    for(std::size_t i = 0; i < b.nodes.size(); i++) {
+      EXPECT_EQ(uv[b.nodes[i]].x(), b.uv[i].x()) << map;
+      EXPECT_EQ(uv[b.nodes[i]].y(), b.uv[i].y()) << map;
+    }
+  }
+}

@@ -127,3 +127,36 @@ TEST(meshFidelity, distancesOfAnOffsetPlaneAndOfQuadrangles)
   EXPECT_NEAR(f.hausdorff, 0.5, 1e-14);
   EXPECT_EQ(f.inverted, 0u);
 }
+
+TEST(meshFidelity, wholeModelDistancesIgnoreWhereFacesMeet)
+{
+  // The input split between two faces along a zig-zag of amplitude 0.1,
+  // the output along the straight line between: face by face the zig-zag's
+  // teeth are 0.1 from the face's own mesh, the whole output covers them
+  testTriangulation grid = rectangleGrid(10, 10, 1., 1.);
+  testTriangulation input[2], output[2];
+  for(const auto &t : grid.triangles) {
+    SPoint3 c = (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) *
+                (1. / 3.);
+    // zig-zag: the column of cells right of x = 0.5 goes left on odd rows
+    const int row = (int)(c.y() * 10.);
+    const double cut = row % 2 ? 0.6 : 0.5;
+    input[c.x() < cut ? 0 : 1].triangles.push_back(t);
+    output[c.x() < 0.5 ? 0 : 1].triangles.push_back(t);
+  }
+  surfaceMesh in[2], out[2];
+  for(int f = 0; f < 2; f++) {
+    // each face with its own nodes only, as Gmsh's faces have
+    input[f].points = output[f].points = grid.points;
+    in[f] = asSurfaceMesh(weld(input[f], 1e-9));
+    out[f] = asSurfaceMesh(weld(output[f], 1e-9));
+  }
+  double faceByFace = 0.;
+  for(int f = 0; f < 2; f++)
+    faceByFace = std::max(faceByFace, compareToInput(in[f], out[f]).hausdorff);
+  EXPECT_NEAR(faceByFace, 0.1, 1e-12);
+  meshFidelity whole = compareDistancesToInput({in[0], in[1]}, {out[0], out[1]});
+  EXPECT_NEAR(whole.hausdorff, 0., 1e-14);
+  EXPECT_NEAR(whole.diagonal, std::sqrt(2.), 1e-14);
+  EXPECT_EQ(whole.elements, grid.triangles.size());
+}

@@ -275,3 +275,43 @@ TEST(patchLayout, classifySurfacesMeshesClosedSurfacesWhole)
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
   gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
 }
+
+TEST(patchLayout, crowdingIsTheSmallestAreaShareRatio)
+{
+  // Two triangles of equal 3D area; the map gives one 1/4 and the other 3/4
+  // of the (u, v) area: ratios 0.5 and 1.5
+  std::vector<SPoint3> xyz = {SPoint3(0, 0, 0), SPoint3(1, 0, 0),
+                              SPoint3(1, 1, 0), SPoint3(0, 1, 0)};
+  std::vector<int> triangles = {0, 1, 2, 0, 2, 3};
+  std::vector<SPoint2> uv = {SPoint2(0, 0), SPoint2(1, 0), SPoint2(1, 0.5),
+                             SPoint2(0, 1)};
+  // uv areas (twice): (0,0),(1,0),(1,0.5): 0.5; (0,0),(1,0.5),(0,1): 1
+  EXPECT_NEAR(mapCrowding(uv, xyz, triangles), (0.5 / 1.5) / 0.5, 1e-15);
+  // a similarity does not crowd
+  std::vector<SPoint2> same = {SPoint2(0, 0), SPoint2(2, 0), SPoint2(2, 2),
+                               SPoint2(0, 2)};
+  EXPECT_NEAR(mapCrowding(same, xyz, triangles), 1., 1e-15);
+  // a collapsed image crowds to 0
+  std::vector<SPoint2> flat = {SPoint2(0, 0), SPoint2(1, 0), SPoint2(1, 0),
+                               SPoint2(0, 1)};
+  EXPECT_NEAR(mapCrowding(flat, xyz, triangles), 0., 1e-15);
+}
+
+TEST(patchLayout, partsMeshAboveGmshBoundOnPatchSizeAreCut)
+{
+  // Mesh.ReparamMaxTriangles bounds Reparam's patches as it does Gmsh's
+  gmsh::clear();
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  addDiscreteSurface(rectangleGrid(20, 20, 1., 1.));
+  gmsh::option::setNumber("Mesh.ReparamMaxTriangles", 300);
+  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+  gmsh::option::setNumber("Mesh.ReparamMaxTriangles", 250000);
+  gmsh::vectorpair faces;
+  gmsh::model::getEntities(faces, 2);
+  EXPECT_GE(faces.size(), 800u / 300u + 1);
+  for(const auto &f : faces) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
+    EXPECT_LE(tags.size(), 300u);
+  }
+}

@@ -226,15 +226,17 @@ testTriangulation jitteredGrid(int n, double amount, unsigned seed)
 testTriangulation weld(testTriangulation t, double tol)
 {
   std::map<std::array<long long, 3>, int> cells;
-  std::vector<int> index(t.points.size());
+  std::vector<int> index(t.points.size(), -1);
   std::vector<SPoint3> kept;
-  for(std::size_t i = 0; i < t.points.size(); i++) {
-    std::array<long long, 3> key;
-    for(int c = 0; c < 3; c++) key[c] = std::llround(t.points[i][c] / tol);
-    auto it = cells.insert(std::make_pair(key, (int)kept.size()));
-    if(it.second) kept.push_back(t.points[i]);
-    index[i] = it.first->second;
-  }
+  for(const auto &tri : t.triangles)
+    for(int i : tri) {
+      if(index[i] >= 0) continue;
+      std::array<long long, 3> key;
+      for(int c = 0; c < 3; c++) key[c] = std::llround(t.points[i][c] / tol);
+      auto it = cells.insert(std::make_pair(key, (int)kept.size()));
+      if(it.second) kept.push_back(t.points[i]);
+      index[i] = it.first->second;
+    }
   std::vector<std::array<int, 3> > triangles;
   for(auto tri : t.triangles) {
     for(int &v : tri) v = index[v];

@@ -65,7 +65,8 @@ testTriangulation saddleStrip(int nx, int ny, double length, double amplitude);
 testTriangulation helicoidStrip(int nAround, int nAcross, double turns,
                                 double r1, double r2, double pitch);
 
-// Nodes closer than tol made one, triangles left with a repeated node dropped
+// Nodes closer than tol made one, nodes of no triangle dropped, triangles
+// left with a repeated node dropped
 testTriangulation weld(testTriangulation t, double tol);
 
 // Closed surfaces: the torus of radii R > r (nAround x nTube cells, both
