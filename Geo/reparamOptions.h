@@ -32,7 +32,7 @@ struct reparamOptions {
   // Mesh.CompoundLayout: ClassifySurfaces{..., forParametrization = 1} lays
   // out the patches with Reparam's own cleaning, cutting and verification
   bool layout = true;
-  // Mesh.CompoundNoiseSize: the size below which feature patches are noise
+  // Mesh.CompoundNoiseSize: the mesh size feature patches are noise against
   // (0: the edge of a uniform mesh with as many triangles as the input)
   double noiseSize = 0.;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
