@@ -5,6 +5,9 @@
 #include "GmshMessage.h"
 #include "MTriangle.h"
 #include "MVertex.h"
+#include "closestTriangle.h"
+#include "invertedElementRepair.h"
+#include "meshFidelity.h"
 #include "reparamMeshValidity.h"
 #include "reparamReport.h"
 
@@ -25,15 +28,48 @@ std::size_t countElementsAgainstFaceNormals(GFace *gf)
   return std::min(against, gf->triangles.size() - against);
 }
 
+namespace {
+
+  // Splits the edges of the triangles pointing against the input (the
+  // report's test), in the orientation most triangles have
+  void repairInvertedTriangles(GFace *gf)
+  {
+    const surfaceMesh input = inputTriangulationOf(gf);
+    if(input.triangles.empty()) return;
+    const closestTriangleSearch onInput(input.points, input.triangles);
+    auto raw = [&](MTriangle *t) {
+      return triangleAgainstInput(t->getVertex(0)->point(),
+                                  t->getVertex(1)->point(),
+                                  t->getVertex(2)->point(), input, onInput);
+    };
+    std::size_t against = 0;
+    for(MTriangle *t : gf->triangles) against += raw(t);
+    const bool reversed = 2 * against > gf->triangles.size();
+    invertedRepair repair = splitInvertedTriangles(
+      gf, [&](MTriangle *t) { return raw(t) != reversed; });
+    if(repair.changes || repair.moves)
+      Msg::Info("Reparam: surface %d: %lu triangles against the input, %lu "
+                "after %lu edge splits or flips and %lu node moves in %lu "
+                "passes",
+                gf->tag(), repair.before, repair.after, repair.changes,
+                repair.moves, repair.passes);
+  }
+
+} // namespace
+
 bool reparamKeepPlanarMesh(GFace *gf)
 {
   // Reparam's own maps only: Gmsh's map keeps Gmsh's behaviour (reference)
   const parametrizationRecord *record = findParametrization(gf);
-  if(!record || record->map <= 0 || gf->triangles.empty()) return false;
+  if(!record || record->map <= 0 || gf->triangles.empty() ||
+     !gf->quadrangles.empty())
+    return false;
+  repairInvertedTriangles(gf);
   const std::size_t against = countElementsAgainstFaceNormals(gf);
+  if(!against) return true;
   if(100 * against > gf->triangles.size()) return false;
   Msg::Info("Reparam: surface %d: mesh kept with %lu of its %lu elements "
-            "against the input normals (no MeshAdapt remesh)",
+            "against the normals at their nodes (no MeshAdapt remesh)",
             gf->tag(), against, gf->triangles.size());
   return true;
 }

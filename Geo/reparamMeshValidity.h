@@ -20,8 +20,10 @@ class GFace;
 // orientation most of them have
 std::size_t countElementsAgainstFaceNormals(GFace *gf);
 
-// True if gf is a discrete face Reparam parametrized whose mesh has at most
-// 1 % of its elements against the face normals: the mesh is kept (logged)
+// For a discrete face Reparam parametrized (else false, and Gmsh's test
+// decides): first splits the edges of the triangles pointing against the
+// input (Mesh/invertedElementRepair), then true if at most 1 % of the
+// elements fail Gmsh's test: the mesh is kept (logged)
 bool reparamKeepPlanarMesh(GFace *gf);
 
 #endif

@@ -114,6 +114,17 @@ namespace {
 
 } // namespace
 
+bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
+                          const SPoint3 &c, const surfaceMesh &input,
+                          const closestTriangleSearch &onInput)
+{
+  surfaceMesh m;
+  m.points = {a, b, c};
+  const std::array<int, 3> t = {{0, 1, 2}};
+  return pointsAgainst<3>(m, t, triangleNormal(m, t), input, onInput,
+                          onInput.closest(centroid<3>(m, t)));
+}
+
 surfaceMesh surfaceMeshOf(const GFace *gf)
 {
   surfaceMesh m;

@@ -53,6 +53,13 @@ meshFidelity compareToInput(const surfaceMesh &input,
 meshFidelity compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
                                      const std::vector<surfaceMesh> &outputs);
 
+// Whether the triangle (a, b, c) points against the input under it (the
+// test meshFidelity::inverted counts with)
+class closestTriangleSearch;
+bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
+                          const SPoint3 &c, const surfaceMesh &input,
+                          const closestTriangleSearch &onInput);
+
 // Only meshFidelity::inverted (N + 1 closest-triangle searches per element
 // of N corners)
 std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output);

@@ -1,0 +1,274 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <vector>
+#include <map>
+#include <utility>
+#include "GFace.h"
+#include "MTriangle.h"
+#include "MVertex.h"
+#include "invertedElementRepair.h"
+
+namespace {
+
+  typedef std::pair<MVertex *, MVertex *> edgeKey;
+
+  edgeKey keyOf(MVertex *a, MVertex *b)
+  {
+    return a < b ? edgeKey(a, b) : edgeKey(b, a);
+  }
+
+  SPoint2 uvOf(GFace *gf, MVertex *v)
+  {
+    SPoint2 uv;
+    reparamMeshVertexOnFace(v, gf, uv);
+    return uv;
+  }
+
+  // The triangles of each inner edge of the face
+  std::map<edgeKey, std::vector<MTriangle *> > edgeTriangles(GFace *gf)
+  {
+    std::map<edgeKey, std::vector<MTriangle *> > edges;
+    for(MTriangle *t : gf->triangles)
+      for(int k = 0; k < 3; k++)
+        edges[keyOf(t->getVertex(k), t->getVertex((k + 1) % 3))].push_back(t);
+    return edges;
+  }
+
+  // Replaces t (corners a, b, c in its order, edge ab split at m) by its two
+  // halves, in t's orientation
+  void splitTriangle(MTriangle *t, MVertex *a, MVertex *b, MVertex *m,
+                     std::vector<MTriangle *> &added)
+  {
+    MVertex *c = nullptr;
+    int ia = -1;
+    for(int k = 0; k < 3; k++) {
+      if(t->getVertex(k) == a) ia = k;
+      if(t->getVertex(k) != a && t->getVertex(k) != b) c = t->getVertex(k);
+    }
+    // t's order is a, b, c or a, c, b
+    if(t->getVertex((ia + 1) % 3) == b) {
+      added.push_back(new MTriangle(a, m, c));
+      added.push_back(new MTriangle(m, b, c));
+    }
+    else {
+      added.push_back(new MTriangle(a, c, m));
+      added.push_back(new MTriangle(m, c, b));
+    }
+  }
+
+  // A local change of the mesh: triangles out, triangles in (owned until
+  // applied), and the new node if any
+  struct localChange {
+    MTriangle *out[2] = {nullptr, nullptr};
+    std::vector<MTriangle *> in;
+    MFaceVertex *node = nullptr;
+    std::size_t bad = 0; // of `in`
+    void discard()
+    {
+      for(MTriangle *t : in) delete t;
+      delete node;
+      in.clear();
+      node = nullptr;
+    }
+  };
+
+  double signedUvArea(GFace *gf, MVertex *a, MVertex *b, MVertex *c)
+  {
+    SPoint2 pa = uvOf(gf, a), pb = uvOf(gf, b), pc = uvOf(gf, c);
+    return (pb.x() - pa.x()) * (pc.y() - pa.y()) -
+           (pb.y() - pa.y()) * (pc.x() - pa.x());
+  }
+
+  // The corner of t that is not a or b
+  MVertex *opposite(MTriangle *t, MVertex *a, MVertex *b)
+  {
+    for(int k = 0; k < 3; k++)
+      if(t->getVertex(k) != a && t->getVertex(k) != b) return t->getVertex(k);
+    return nullptr;
+  }
+
+  // Edge (a, b) of the two triangles `pair` split at its (u, v) midpoint
+  bool splitChange(GFace *gf, MVertex *a, MVertex *b, MTriangle *const *pair,
+                   localChange &c)
+  {
+    SPoint2 ua = uvOf(gf, a), ub = uvOf(gf, b);
+    const double u = 0.5 * (ua.x() + ub.x()), v = 0.5 * (ua.y() + ub.y());
+    GPoint p = gf->point(u, v);
+    if(!p.succeeded()) return false;
+    c.node = new MFaceVertex(p.x(), p.y(), p.z(), gf, u, v);
+    for(int i = 0; i < 2; i++) {
+      c.out[i] = pair[i];
+      splitTriangle(pair[i], a, b, c.node, c.in);
+    }
+    return true;
+  }
+
+  // Edge (a, b) of the two triangles `pair` flipped, if both new triangles
+  // keep the (u, v) orientation of the old ones
+  bool flipChange(GFace *gf, MVertex *a, MVertex *b, MTriangle *const *pair,
+                  localChange &c)
+  {
+    MVertex *p = opposite(pair[0], a, b), *q = opposite(pair[1], a, b);
+    // pair[0] in its own order: (a, b, p) or (b, a, p)
+    int ia = 0;
+    while(pair[0]->getVertex(ia) != a) ia++;
+    const bool abp = pair[0]->getVertex((ia + 1) % 3) == b;
+    MVertex *first[3] = {abp ? a : b, abp ? b : a, p};
+    const double sign = signedUvArea(gf, first[0], first[1], first[2]);
+    // (a, b, p) becomes (a, q, p) and (q, b, p), in the same turn
+    MTriangle *t1 = new MTriangle(first[0], q, first[2]);
+    MTriangle *t2 = new MTriangle(q, first[1], first[2]);
+    if(signedUvArea(gf, first[0], q, first[2]) * sign <= 0. ||
+       signedUvArea(gf, q, first[1], first[2]) * sign <= 0.) {
+      delete t1;
+      delete t2;
+      return false;
+    }
+    c.out[0] = pair[0];
+    c.out[1] = pair[1];
+    c.in = {t1, t2};
+    return true;
+  }
+
+  // The change around t, among the splits and flips of its inner edges,
+  // that leaves the fewest triangles against the input, if fewer than the
+  // two it replaces
+  bool bestChange(GFace *gf, MTriangle *t,
+                  std::map<edgeKey, std::vector<MTriangle *> > &edges,
+                  const std::function<bool(MTriangle *)> &against,
+                  localChange &best)
+  {
+    bool found = false;
+    for(int k = 0; k < 3; k++) {
+      MVertex *a = t->getVertex(k), *b = t->getVertex((k + 1) % 3);
+      auto it = edges.find(keyOf(a, b));
+      if(it == edges.end() || it->second.size() != 2) continue; // boundary
+      MTriangle *pair[2] = {it->second[0], it->second[1]};
+      const std::size_t bad = against(pair[0]) + against(pair[1]);
+      for(int kind = 0; kind < 2; kind++) {
+        localChange c;
+        if(!(kind ? flipChange(gf, a, b, pair, c) :
+                    splitChange(gf, a, b, pair, c)))
+          continue;
+        for(MTriangle *n : c.in) c.bad += against(n);
+        if(c.bad < bad && (!found || c.bad < best.bad)) {
+          if(found) best.discard();
+          best = c;
+          found = true;
+        }
+        else
+          c.discard();
+      }
+    }
+    return found;
+  }
+
+  // Moves the inner corners of the triangles against the input to the
+  // (u, v) centroid of their neighbours, where that leaves fewer of their
+  // triangles against the input and keeps every one valid in (u, v);
+  // returns the nodes moved
+  std::size_t relocateCorners(GFace *gf,
+                              const std::function<bool(MTriangle *)> &against)
+  {
+    std::map<MVertex *, std::vector<MTriangle *> > ring;
+    for(MTriangle *t : gf->triangles)
+      for(int k = 0; k < 3; k++) ring[t->getVertex(k)].push_back(t);
+    std::size_t moved = 0;
+    for(MTriangle *t : gf->triangles) {
+      if(!against(t)) continue;
+      for(int k = 0; k < 3; k++) {
+        MFaceVertex *v = dynamic_cast<MFaceVertex *>(t->getVertex(k));
+        if(!v || v->onWhat() != gf) continue; // on a curve: stays
+        const std::vector<MTriangle *> &around = ring[v];
+        SPoint2 old = uvOf(gf, v), centroid(0., 0.);
+        std::vector<double> sign(around.size());
+        std::size_t bad = 0, n = 0;
+        for(std::size_t i = 0; i < around.size(); i++) {
+          MTriangle *a = around[i];
+          sign[i] = signedUvArea(gf, a->getVertex(0), a->getVertex(1),
+                                 a->getVertex(2));
+          bad += against(a);
+          for(int j = 0; j < 3; j++)
+            if(a->getVertex(j) != v) {
+              centroid += uvOf(gf, a->getVertex(j));
+              n++;
+            }
+        }
+        if(!n) continue;
+        centroid *= 1. / n;
+        GPoint p = gf->point(centroid.x(), centroid.y());
+        if(!p.succeeded()) continue;
+        const SPoint3 oldXyz = v->point();
+        auto place = [&](const SPoint2 &uv, const SPoint3 &xyz) {
+          v->setParameter(0, uv.x());
+          v->setParameter(1, uv.y());
+          v->x() = xyz.x();
+          v->y() = xyz.y();
+          v->z() = xyz.z();
+        };
+        place(centroid, SPoint3(p.x(), p.y(), p.z()));
+        bool valid = true;
+        std::size_t badAfter = 0;
+        for(std::size_t i = 0; i < around.size() && valid; i++) {
+          MTriangle *a = around[i];
+          valid = signedUvArea(gf, a->getVertex(0), a->getVertex(1),
+                               a->getVertex(2)) * sign[i] > 0.;
+          badAfter += against(a);
+        }
+        if(valid && badAfter < bad)
+          moved++;
+        else
+          place(old, oldXyz);
+      }
+    }
+    return moved;
+  }
+
+} // namespace
+
+invertedRepair
+splitInvertedTriangles(GFace *gf, const std::function<bool(MTriangle *)> &against,
+                       int maxPasses)
+{
+  invertedRepair r;
+  for(MTriangle *t : gf->triangles) r.before += against(t);
+  r.after = r.before;
+  while(r.after && (int)r.passes < maxPasses) {
+    r.passes++;
+    std::map<edgeKey, std::vector<MTriangle *> > edges = edgeTriangles(gf);
+    std::map<MTriangle *, bool> removed;
+    std::vector<MTriangle *> added;
+    std::size_t changes = 0;
+    for(MTriangle *t : gf->triangles) {
+      if(removed.count(t) || !against(t)) continue;
+      localChange c;
+      if(!bestChange(gf, t, edges, against, c)) continue;
+      if(removed.count(c.out[0]) || removed.count(c.out[1])) {
+        c.discard();
+        continue;
+      }
+      if(c.node) gf->mesh_vertices.push_back(c.node);
+      for(MTriangle *o : c.out) removed[o] = true;
+      added.insert(added.end(), c.in.begin(), c.in.end());
+      changes++;
+    }
+    r.changes += changes;
+    std::vector<MTriangle *> kept;
+    kept.reserve(gf->triangles.size() + added.size());
+    for(MTriangle *t : gf->triangles) {
+      if(removed.count(t))
+        delete t;
+      else
+        kept.push_back(t);
+    }
+    kept.insert(kept.end(), added.begin(), added.end());
+    gf->triangles = kept;
+    const std::size_t moved = relocateCorners(gf, against);
+    r.moves += moved;
+    if(!changes && !moved) break;
+    r.after = 0;
+    for(MTriangle *t : gf->triangles) r.after += against(t);
+  }
+  return r;
+}
