@@ -7,55 +7,10 @@
 #include "GFace.h"
 #include "MTriangle.h"
 #include "MVertex.h"
+#include "faceMeshEdit.h"
 #include "invertedElementRepair.h"
 
 namespace {
-
-  typedef std::pair<MVertex *, MVertex *> edgeKey;
-
-  edgeKey keyOf(MVertex *a, MVertex *b)
-  {
-    return a < b ? edgeKey(a, b) : edgeKey(b, a);
-  }
-
-  SPoint2 uvOf(GFace *gf, MVertex *v)
-  {
-    SPoint2 uv;
-    reparamMeshVertexOnFace(v, gf, uv);
-    return uv;
-  }
-
-  // The triangles of each inner edge of the face
-  std::map<edgeKey, std::vector<MTriangle *> > edgeTriangles(GFace *gf)
-  {
-    std::map<edgeKey, std::vector<MTriangle *> > edges;
-    for(MTriangle *t : gf->triangles)
-      for(int k = 0; k < 3; k++)
-        edges[keyOf(t->getVertex(k), t->getVertex((k + 1) % 3))].push_back(t);
-    return edges;
-  }
-
-  // Replaces t (corners a, b, c in its order, edge ab split at m) by its two
-  // halves, in t's orientation
-  void splitTriangle(MTriangle *t, MVertex *a, MVertex *b, MVertex *m,
-                     std::vector<MTriangle *> &added)
-  {
-    MVertex *c = nullptr;
-    int ia = -1;
-    for(int k = 0; k < 3; k++) {
-      if(t->getVertex(k) == a) ia = k;
-      if(t->getVertex(k) != a && t->getVertex(k) != b) c = t->getVertex(k);
-    }
-    // t's order is a, b, c or a, c, b
-    if(t->getVertex((ia + 1) % 3) == b) {
-      added.push_back(new MTriangle(a, m, c));
-      added.push_back(new MTriangle(m, b, c));
-    }
-    else {
-      added.push_back(new MTriangle(a, c, m));
-      added.push_back(new MTriangle(m, c, b));
-    }
-  }
 
   // A local change of the mesh: triangles out, triangles in (owned until
   // applied), and the new node if any
@@ -75,7 +30,7 @@ namespace {
 
   double signedUvArea(GFace *gf, MVertex *a, MVertex *b, MVertex *c)
   {
-    SPoint2 pa = uvOf(gf, a), pb = uvOf(gf, b), pc = uvOf(gf, c);
+    SPoint2 pa = meshNodeUv(gf, a), pb = meshNodeUv(gf, b), pc = meshNodeUv(gf, c);
     return (pb.x() - pa.x()) * (pc.y() - pa.y()) -
            (pb.y() - pa.y()) * (pc.x() - pa.x());
   }
@@ -92,14 +47,13 @@ namespace {
   bool splitChange(GFace *gf, MVertex *a, MVertex *b, MTriangle *const *pair,
                    localChange &c)
   {
-    SPoint2 ua = uvOf(gf, a), ub = uvOf(gf, b);
+    SPoint2 ua = meshNodeUv(gf, a), ub = meshNodeUv(gf, b);
     const double u = 0.5 * (ua.x() + ub.x()), v = 0.5 * (ua.y() + ub.y());
-    GPoint p = gf->point(u, v);
-    if(!p.succeeded()) return false;
-    c.node = new MFaceVertex(p.x(), p.y(), p.z(), gf, u, v);
+    c.node = newFaceNode(gf, u, v);
+    if(!c.node) return false;
     for(int i = 0; i < 2; i++) {
       c.out[i] = pair[i];
-      splitTriangle(pair[i], a, b, c.node, c.in);
+      splitTriangleAt(pair[i], a, b, c.node, c.in);
     }
     return true;
   }
@@ -135,14 +89,14 @@ namespace {
   // that leaves the fewest triangles against the input, if fewer than the
   // two it replaces
   bool bestChange(GFace *gf, MTriangle *t,
-                  std::map<edgeKey, std::vector<MTriangle *> > &edges,
+                  std::map<meshEdgeKey, std::vector<MTriangle *> > &edges,
                   const std::function<bool(MTriangle *)> &against,
                   localChange &best)
   {
     bool found = false;
     for(int k = 0; k < 3; k++) {
       MVertex *a = t->getVertex(k), *b = t->getVertex((k + 1) % 3);
-      auto it = edges.find(keyOf(a, b));
+      auto it = edges.find(meshEdge(a, b));
       if(it == edges.end() || it->second.size() != 2) continue; // boundary
       MTriangle *pair[2] = {it->second[0], it->second[1]};
       const std::size_t bad = against(pair[0]) + against(pair[1]);
@@ -181,7 +135,7 @@ namespace {
         MFaceVertex *v = dynamic_cast<MFaceVertex *>(t->getVertex(k));
         if(!v || v->onWhat() != gf) continue; // on a curve: stays
         const std::vector<MTriangle *> &around = ring[v];
-        SPoint2 old = uvOf(gf, v), centroid(0., 0.);
+        SPoint2 old = meshNodeUv(gf, v), centroid(0., 0.);
         std::vector<double> sign(around.size());
         std::size_t bad = 0, n = 0;
         for(std::size_t i = 0; i < around.size(); i++) {
@@ -191,7 +145,7 @@ namespace {
           bad += against(a);
           for(int j = 0; j < 3; j++)
             if(a->getVertex(j) != v) {
-              centroid += uvOf(gf, a->getVertex(j));
+              centroid += meshNodeUv(gf, a->getVertex(j));
               n++;
             }
         }
@@ -236,8 +190,8 @@ splitInvertedTriangles(GFace *gf, const std::function<bool(MTriangle *)> &agains
   r.after = r.before;
   while(r.after && (int)r.passes < maxPasses) {
     r.passes++;
-    std::map<edgeKey, std::vector<MTriangle *> > edges = edgeTriangles(gf);
-    std::map<MTriangle *, bool> removed;
+    std::map<meshEdgeKey, std::vector<MTriangle *> > edges = faceEdgeTriangles(gf);
+    std::set<MTriangle *> removed;
     std::vector<MTriangle *> added;
     std::size_t changes = 0;
     for(MTriangle *t : gf->triangles) {
@@ -249,21 +203,12 @@ splitInvertedTriangles(GFace *gf, const std::function<bool(MTriangle *)> &agains
         continue;
       }
       if(c.node) gf->mesh_vertices.push_back(c.node);
-      for(MTriangle *o : c.out) removed[o] = true;
+      for(MTriangle *o : c.out) removed.insert(o);
       added.insert(added.end(), c.in.begin(), c.in.end());
       changes++;
     }
     r.changes += changes;
-    std::vector<MTriangle *> kept;
-    kept.reserve(gf->triangles.size() + added.size());
-    for(MTriangle *t : gf->triangles) {
-      if(removed.count(t))
-        delete t;
-      else
-        kept.push_back(t);
-    }
-    kept.insert(kept.end(), added.begin(), added.end());
-    gf->triangles = kept;
+    replaceTriangles(gf, removed, added);
     const std::size_t moved = relocateCorners(gf, against);
     r.moves += moved;
     if(!changes && !moved) break;

@@ -315,3 +315,23 @@ TEST(patchLayout, partsMeshAboveGmshBoundOnPatchSizeAreCut)
     EXPECT_LE(tags.size(), 300u);
   }
 }
+
+TEST(patchLayout, longStripsAreCutOnlyWhereTheyWindAround)
+{
+  // A flat strip 40 times longer than wide: its conformal map is a
+  // similarity, no cut. A ramp of 1.5 turns: both conformal maps fold, and
+  // mean value would squeeze it; it is cut until its parts map conformally
+  layoutMesh flat = meshOf(rectangleGrid(200, 5, 40., 1.));
+  layoutResult r = layoutWithMaps(flat, layoutParameters());
+  EXPECT_EQ(r.numPatches, 1);
+  EXPECT_TRUE(r.splits.empty());
+
+  layoutMesh ramp = meshOf(helicoidStrip(120, 6, 1.5, 1., 2., 0.05));
+  r = layoutWithMaps(ramp, layoutParameters());
+  EXPECT_GE(r.numPatches, 2);
+  EXPECT_LE(r.numPatches, 6);
+  ASSERT_FALSE(r.splits.empty());
+  EXPECT_NE(r.splits[0].reason.find("conformal maps fold"), std::string::npos)
+    << r.splits[0].reason;
+  expectDiskPatches(ramp, r);
+}
