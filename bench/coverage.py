@@ -18,10 +18,12 @@ import re
 import resource
 import shutil
 import signal
-import struct
 import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stlfile  # noqa: E402
 
 # About this many output triangles: the input's own count, capped so the
 # large meshes stay quick to remesh
@@ -41,8 +43,7 @@ def read_stl(path):
     """Triangles of a binary or ASCII STL as triples of vertex ids, and the
     total area. STL repeats each corner in every triangle: corners with
     identical coordinates are welded into one vertex to get the edges."""
-    with open(path, "rb") as f:
-        corners = _stl_corners(f.read())
+    corners = stlfile.stl_corners(path)
     ids = {}
     triangles = []
     area = 0.0
@@ -51,40 +52,6 @@ def read_stl(path):
         area += triangle_area(a, b, c)
         triangles.append(tuple(ids.setdefault(p, len(ids)) for p in (a, b, c)))
     return triangles, area
-
-
-def _stl_corners(data):
-    # A binary header may start with "solid" too: a size that matches the
-    # triangle count says binary; else ASCII, else binary with a few bytes
-    # appended (some writers do)
-    count = struct.unpack_from("<I", data, 80)[0] if len(data) >= 84 else -1
-    end = 84 + 50 * count
-    if len(data) == end:
-        return _binary_stl_corners(data[84:end])
-    try:
-        return _ascii_stl_corners(data)
-    except ValueError:
-        if count < 0 or len(data) < end:
-            raise
-        return _binary_stl_corners(data[84:end])
-
-
-def _binary_stl_corners(records):
-    corners = []
-    for record in struct.iter_unpack("<12fH", records):
-        corners += [record[3:6], record[6:9], record[9:12]]
-    return corners
-
-
-def _ascii_stl_corners(data):
-    corners = []
-    for line in data.decode("ascii", "replace").splitlines():
-        words = line.split()
-        if len(words) == 4 and words[0] == "vertex":
-            corners.append(tuple(float(w) for w in words[1:]))
-    if not corners or len(corners) % 3:
-        raise ValueError("not an STL file (or a truncated one)")
-    return corners
 
 
 def triangle_area(a, b, c):

@@ -5,8 +5,11 @@ the bench's "100k-triangle patch" for the per-map speed targets.
     bench/make-large-patch.py out.stl [N=100000]
 """
 import math
-import struct
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stlfile  # noqa: E402
 
 out = sys.argv[1]
 target = int(sys.argv[2]) if len(sys.argv) > 2 else 100000
@@ -24,11 +27,4 @@ for j in range(n):
         a, b = point(i, j), point(i + 1, j)
         c, d = point(i, j + 1), point(i + 1, j + 1)
         triangles += [(a, b, d), (a, d, c)]
-with open(out, "wb") as f:
-    f.write(b"Reparam bench: bumpy square patch".ljust(80, b"\0"))
-    f.write(struct.pack("<I", len(triangles)))
-    for t in triangles:
-        f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
-        for p in t:
-            f.write(struct.pack("<3f", *p))
-        f.write(b"\0\0")
+stlfile.write_binary_stl(out, triangles, b"Reparam bench: bumpy square patch")
