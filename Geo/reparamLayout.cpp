@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 #include "Context.h"
 #include "GModel.h"
@@ -49,6 +50,28 @@ double mapCrowding(const std::vector<SPoint2> &uv,
     crowding = std::min(crowding, (uvArea[t] / uvTotal) / (area[t] / total));
   }
   return crowding > 1e299 ? 1. : crowding;
+}
+
+double boundaryLargeness(const std::vector<SPoint3> &xyz,
+                         const std::vector<int> &triangleNodes)
+{
+  std::map<std::pair<int, int>, int> uses;
+  double area = 0.;
+  for(std::size_t t = 0; t + 2 < triangleNodes.size(); t += 3) {
+    const int *n = &triangleNodes[t];
+    area += 0.5 * crossprod(SVector3(xyz[n[0]], xyz[n[1]]),
+                            SVector3(xyz[n[0]], xyz[n[2]]))
+                    .norm();
+    for(int k = 0; k < 3; k++) {
+      int a = n[k], b = n[(k + 1) % 3];
+      uses[std::make_pair(std::min(a, b), std::max(a, b))]++;
+    }
+  }
+  double length = 0.;
+  for(const auto &e : uses)
+    if(e.second == 1) length += xyz[e.first.first].distance(xyz[e.first.second]);
+  if(!(length > 0.)) return 1e300; // closed
+  return area / (length * length / (4. * M_PI));
 }
 
 namespace {
@@ -146,10 +169,24 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
   // the planar mesher then works at the limit of its precision (aorta as one
   // face: parts meshed far too coarsely, 12 % Hausdorff distance)
   double crowding = mapCrowding(uv, xyz, nodes);
+  char s[128];
   if(crowding < reparamMinCrowding) {
     check.ok = false;
-    char s[128];
     snprintf(s, sizeof(s), "its map crowds it (area ratio %.2g)", crowding);
+    check.reason = s;
+    return check;
+  }
+  // A patch much larger than its boundary (a sock: a tube closed at one
+  // end): the planar mesher starts from the boundary nodes and measures
+  // edges by their chords, so it leaves the patch nearly empty
+  // (gmsh2x_falcon1: a face of 3 triangles, 17 % of the diagonal from the
+  // input)
+  double largeness = boundaryLargeness(xyz, nodes);
+  if(largeness > reparamMaxLargeness) {
+    check.ok = false;
+    snprintf(s, sizeof(s),
+             "it is %.3g times larger than the disk its boundary bounds",
+             largeness);
     check.reason = s;
   }
   return check;

@@ -20,6 +20,15 @@ class MTriangle;
 // below this fraction of its share of the 3D area
 const double reparamMinCrowding = 1e-4;
 
+// A part is cut when its area is more than this many times the area of the
+// flat disk its boundary would bound (a hemisphere: 2)
+const double reparamMaxLargeness = 4.;
+
+// Area over that of the disk with the boundary's length (all loops): 1 for
+// a flat disk, 2 for a hemisphere, large for a tube closed at one end
+double boundaryLargeness(const std::vector<SPoint3> &xyz,
+                         const std::vector<int> &triangleNodes);
+
 // Smallest ratio, over the triangles, of their share of the (u, v) area to
 // their share of the 3D area (input slivers left out): 1 for a map that
 // preserves area, small where the map squeezes the surface
@@ -31,7 +40,8 @@ double mapCrowding(const std::vector<SPoint2> &uv,
 layoutParameters reparamLayoutParameters(const layoutMesh &mesh);
 
 // The part is kept if the map CreateGeometry will compute for it is
-// one-to-one and does not crowd it
+// one-to-one and does not crowd it, and the part is not much larger than
+// its boundary
 partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles);
 
 #endif

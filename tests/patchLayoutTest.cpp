@@ -338,3 +338,19 @@ TEST(patchLayout, longStripsAreCutOnlyWhereTheyWindAround)
     << r.splits[0].reason;
   expectDiskPatches(ramp, r);
 }
+
+TEST(patchLayout, largenessComparesTheAreaWithTheDiskOfTheBoundary)
+{
+  // a flat disk: 1 (to the polygon's discretization); a hemisphere: 2; a
+  // tube closed at one end (a sock) much more: it is cut
+  auto largeness = [](const testTriangulation &t) {
+    std::vector<int> nodes;
+    for(const auto &tri : t.triangles) nodes.insert(nodes.end(), tri.begin(), tri.end());
+    return boundaryLargeness(t.points, nodes);
+  };
+  EXPECT_NEAR(largeness(polarDisk(20, 200)), 1., 1e-3);
+  EXPECT_NEAR(largeness(hemisphere(40, 200)), 2., 2e-2);
+  testTriangulation sock = sphericalCap(40, 64, 0.9 * M_PI);
+  EXPECT_GT(largeness(sock), reparamMaxLargeness);
+  EXPECT_LT(largeness(sphericalCap(40, 64, 0.5 * M_PI)), reparamMaxLargeness);
+}
