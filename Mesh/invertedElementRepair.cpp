@@ -61,9 +61,13 @@ namespace {
   // Edge (a, b) of the two triangles `pair` flipped, if both new triangles
   // keep the (u, v) orientation of the old ones
   bool flipChange(GFace *gf, MVertex *a, MVertex *b, MTriangle *const *pair,
+                  const std::map<meshEdgeKey, std::vector<MTriangle *> > &edges,
                   localChange &c)
   {
     MVertex *p = opposite(pair[0], a, b), *q = opposite(pair[1], a, b);
+    // the new edge must not be in the mesh already (it would get four
+    // triangles): possible where the (u, v) mesh folds at a boundary
+    if(!p || !q || p == q || edges.count(meshEdge(p, q))) return false;
     // pair[0] in its own order: (a, b, p) or (b, a, p)
     int ia = 0;
     while(pair[0]->getVertex(ia) != a) ia++;
@@ -102,7 +106,7 @@ namespace {
       const std::size_t bad = against(pair[0]) + against(pair[1]);
       for(int kind = 0; kind < 2; kind++) {
         localChange c;
-        if(!(kind ? flipChange(gf, a, b, pair, c) :
+        if(!(kind ? flipChange(gf, a, b, pair, edges, c) :
                     splitChange(gf, a, b, pair, c)))
           continue;
         for(MTriangle *n : c.in) c.bad += against(n);
@@ -205,6 +209,12 @@ splitInvertedTriangles(GFace *gf, const std::function<bool(MTriangle *)> &agains
       if(c.node) gf->mesh_vertices.push_back(c.node);
       for(MTriangle *o : c.out) removed.insert(o);
       added.insert(added.end(), c.in.begin(), c.in.end());
+      // the new edges, for the flips that follow in this pass (the removed
+      // triangles stay listed: their edges are skipped as changed)
+      for(MTriangle *n : c.in)
+        for(int k = 0; k < 3; k++)
+          edges[meshEdge(n->getVertex(k), n->getVertex((k + 1) % 3))]
+            .push_back(n);
       changes++;
     }
     r.changes += changes;
