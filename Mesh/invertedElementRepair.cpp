@@ -122,10 +122,61 @@ namespace {
     return found;
   }
 
+  // A node of the face's mesh moved in (u, v), its triangles watched
+  struct movableNode {
+    GFace *gf;
+    MFaceVertex *v;
+    const std::vector<MTriangle *> &around;
+    std::vector<double> sign; // (u, v) orientation of each, to keep
+
+    // Moves the node to (u, v), on the surface; false where there is none
+    bool place(const SPoint2 &uv)
+    {
+      GPoint p = gf->point(uv.x(), uv.y());
+      if(!p.succeeded()) return false;
+      v->setParameter(0, uv.x());
+      v->setParameter(1, uv.y());
+      v->x() = p.x();
+      v->y() = p.y();
+      v->z() = p.z();
+      return true;
+    }
+    // Triangles around against the input, or -1 if one turned over in (u, v)
+    int bad(const std::function<bool(MTriangle *)> &against) const
+    {
+      int n = 0;
+      for(std::size_t i = 0; i < around.size(); i++) {
+        MTriangle *a = around[i];
+        if(signedUvArea(gf, a->getVertex(0), a->getVertex(1),
+                        a->getVertex(2)) * sign[i] <= 0.)
+          return -1;
+        n += against(a);
+      }
+      return n;
+    }
+  };
+
+  // Where to try the node: the (u, v) centroid of its neighbours, and
+  // halfway to each of them
+  std::vector<SPoint2> candidatePlaces(GFace *gf, MVertex *v,
+                                       const std::vector<MTriangle *> &around)
+  {
+    const SPoint2 here = meshNodeUv(gf, v);
+    std::vector<SPoint2> places(1, SPoint2(0., 0.));
+    for(MTriangle *a : around)
+      for(int j = 0; j < 3; j++) {
+        if(a->getVertex(j) == v) continue;
+        SPoint2 q = meshNodeUv(gf, a->getVertex(j));
+        places[0] += q * (1. / (2 * around.size()));
+        places.push_back((here + q) * 0.5);
+      }
+    return places;
+  }
+
   // Moves the inner corners of the triangles against the input to the
-  // (u, v) centroid of their neighbours, where that leaves fewer of their
-  // triangles against the input and keeps every one valid in (u, v);
-  // returns the nodes moved
+  // place among candidatePlaces that leaves the fewest of their triangles
+  // against the input, if fewer than now and all valid in (u, v); returns
+  // the nodes moved
   std::size_t relocateCorners(GFace *gf,
                               const std::function<bool(MTriangle *)> &against)
   {
@@ -138,46 +189,32 @@ namespace {
       for(int k = 0; k < 3; k++) {
         MFaceVertex *v = dynamic_cast<MFaceVertex *>(t->getVertex(k));
         if(!v || v->onWhat() != gf) continue; // on a curve: stays
-        const std::vector<MTriangle *> &around = ring[v];
-        SPoint2 old = meshNodeUv(gf, v), centroid(0., 0.);
-        std::vector<double> sign(around.size());
-        std::size_t bad = 0, n = 0;
-        for(std::size_t i = 0; i < around.size(); i++) {
-          MTriangle *a = around[i];
-          sign[i] = signedUvArea(gf, a->getVertex(0), a->getVertex(1),
-                                 a->getVertex(2));
-          bad += against(a);
-          for(int j = 0; j < 3; j++)
-            if(a->getVertex(j) != v) {
-              centroid += meshNodeUv(gf, a->getVertex(j));
-              n++;
-            }
+        movableNode node{gf, v, ring[v], {}};
+        for(MTriangle *a : node.around)
+          node.sign.push_back(signedUvArea(gf, a->getVertex(0),
+                                           a->getVertex(1), a->getVertex(2)));
+        const SPoint2 start = meshNodeUv(gf, v);
+        const SPoint3 startXyz = v->point();
+        int best = node.bad(against), bestPlace = -1;
+        std::vector<SPoint2> places = candidatePlaces(gf, v, node.around);
+        for(std::size_t i = 0; i < places.size(); i++) {
+          if(!node.place(places[i])) continue;
+          int bad = node.bad(against);
+          if(bad >= 0 && bad < best) {
+            best = bad;
+            bestPlace = (int)i;
+          }
         }
-        if(!n) continue;
-        centroid *= 1. / n;
-        GPoint p = gf->point(centroid.x(), centroid.y());
-        if(!p.succeeded()) continue;
-        const SPoint3 oldXyz = v->point();
-        auto place = [&](const SPoint2 &uv, const SPoint3 &xyz) {
-          v->setParameter(0, uv.x());
-          v->setParameter(1, uv.y());
-          v->x() = xyz.x();
-          v->y() = xyz.y();
-          v->z() = xyz.z();
-        };
-        place(centroid, SPoint3(p.x(), p.y(), p.z()));
-        bool valid = true;
-        std::size_t badAfter = 0;
-        for(std::size_t i = 0; i < around.size() && valid; i++) {
-          MTriangle *a = around[i];
-          valid = signedUvArea(gf, a->getVertex(0), a->getVertex(1),
-                               a->getVertex(2)) * sign[i] > 0.;
-          badAfter += against(a);
-        }
-        if(valid && badAfter < bad)
+        if(bestPlace >= 0 && node.place(places[bestPlace])) {
           moved++;
-        else
-          place(old, oldXyz);
+          continue;
+        }
+        // back where it was, exactly
+        v->setParameter(0, start.x());
+        v->setParameter(1, start.y());
+        v->x() = startXyz.x();
+        v->y() = startXyz.y();
+        v->z() = startXyz.z();
       }
     }
     return moved;
