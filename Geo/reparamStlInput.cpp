@@ -26,8 +26,12 @@ std::size_t reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &poin
       else
         dropped++;
     }
-    // a trailing incomplete facet is Gmsh's own error to report
-    kept.insert(kept.end(), solid.begin() + (solid.size() / 3) * 3, solid.end());
+    if(solid.size() % 3) {
+      // a file cut in the middle of a facet: its complete facets are read
+      Msg::Warning("Reparam: the STL file ends in the middle of a facet: "
+                   "%lu facets read",
+                   kept.size() / 3);
+    }
     solid.swap(kept);
   }
   if(!dropped) return 0;
@@ -38,4 +42,14 @@ std::size_t reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &poin
                "skipped",
                dropped);
   return dropped;
+}
+
+unsigned int reparamCompleteStlFacets(unsigned int facets, std::size_t bytesRead)
+{
+  const std::size_t complete = bytesRead / 50;
+  if(complete >= facets) return facets;
+  Msg::Warning("Reparam: the binary STL file is truncated: %lu of its %u "
+               "facets read",
+               complete, facets);
+  return (unsigned int)complete;
 }

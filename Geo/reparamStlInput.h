@@ -2,8 +2,9 @@
 //
 // The facets of an STL file as Gmsh reads them (hook in GModel::readSTL,
 // patches/0009): a facet with a NaN or infinite coordinate made Gmsh's
-// reader crash (its node search box became NaN). Such facets are dropped,
-// with one warning; the others are read.
+// reader crash (its node search box became NaN), and a file cut short was
+// refused whole. Such facets are dropped, with one warning; the others are
+// read.
 
 #ifndef REPARAM_STL_INPUT_H
 #define REPARAM_STL_INPUT_H
@@ -14,8 +15,15 @@
 
 // points: per solid, 3 corners per facet. Drops the facets with a
 // non-finite corner and recomputes bbox when any was dropped; returns how
-// many were
+// many were. An incomplete last facet (a file cut short) is dropped too,
+// with a warning.
 std::size_t reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
                                         SBoundingBox3d &bbox);
+
+// The facets of a binary STL read when `bytesRead` of the `facets` * 50
+// bytes announced were there: all of them, or the complete ones of a file
+// cut short (with a warning; Gmsh read none)
+unsigned int reparamCompleteStlFacets(unsigned int facets,
+                                      std::size_t bytesRead);
 
 #endif

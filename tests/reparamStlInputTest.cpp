@@ -65,3 +65,18 @@ TEST(reparamStlInput, anStlWithANanNodeIsReadAndMeshedWithoutIt)
   EXPECT_EQ(tags.size(), 3u);
   std::remove(file.c_str());
 }
+
+TEST(reparamStlInput, theCompleteFacetsOfAFileCutShortAreRead)
+{
+  // binary: 50 bytes a facet
+  EXPECT_EQ(reparamCompleteStlFacets(10, 500), 10u);
+  EXPECT_EQ(reparamCompleteStlFacets(10, 499), 9u);
+  EXPECT_EQ(reparamCompleteStlFacets(10, 0), 0u);
+  // ASCII: a last facet with two corners only
+  std::vector<std::vector<SPoint3> > points = {
+    {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(0, 1, 0), SPoint3(1, 1, 0),
+     SPoint3(2, 1, 0)}};
+  SBoundingBox3d box;
+  EXPECT_EQ(reparamDropInvalidStlFacets(points, box), 0u);
+  EXPECT_EQ(points[0].size(), 3u);
+}
