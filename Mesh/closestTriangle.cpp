@@ -71,48 +71,79 @@ closestTriangleSearch::closestTriangleSearch(
     meanRadius += radius[t];
   }
   meanRadius /= _triangles.size();
-  // a cap on the subdivision bounds the memory for a few huge triangles
-  // among tiny ones (CAD STL); the search stays exact, only slower
+  // a cap on the subdivision bounds the memory: the few huge triangles
+  // among tiny ones (CAD STL) are measured at every query instead
   const int maxSubdivision = 64;
   std::vector<int> subdivision(_triangles.size(), 1);
-  std::size_t numSamples = 0;
+  double largest = 0.;
   for(std::size_t t = 0; t < _triangles.size(); t++) {
+    if(meanRadius > 0. && radius[t] > maxSubdivision * meanRadius) {
+      subdivision[t] = 0;
+      _hugeTriangles.push_back((int)t);
+      continue;
+    }
     if(meanRadius > 0. && radius[t] > meanRadius)
-      subdivision[t] =
-        std::min(maxSubdivision, (int)std::ceil(radius[t] / meanRadius));
-    numSamples += (std::size_t)subdivision[t] * subdivision[t];
-    _sampleRadius = std::max(_sampleRadius, radius[t] / subdivision[t]);
+      subdivision[t] = (int)std::ceil(radius[t] / meanRadius);
+    largest = std::max(largest, radius[t] / subdivision[t]);
   }
-
-  _samplePoints = annAllocPts((int)numSamples, 3);
-  _sampleTriangle.reserve(numSamples);
-  auto addSample = [&](int t, double v, double w) {
-    const SPoint3 &a = _points[_triangles[t][0]],
-                  &b = _points[_triangles[t][1]],
-                  &c = _points[_triangles[t][2]];
-    double *s = _samplePoints[_sampleTriangle.size()];
-    for(int k = 0; k < 3; k++)
-      s[k] = a[k] + v * (b[k] - a[k]) + w * (c[k] - a[k]);
-    _sampleTriangle.push_back(t);
+  // class k: sample radius in (largest / 2^(k+1), largest / 2^k]
+  const int numClasses = 24;
+  auto classOf = [&](std::size_t t) {
+    const double r = radius[t] / subdivision[t];
+    if(!(r > 0.) || !(largest > 0.)) return numClasses - 1;
+    return std::min(numClasses - 1, (int)std::floor(std::log2(largest / r)));
   };
+  std::vector<std::size_t> count(numClasses, 0);
+  for(std::size_t t = 0; t < _triangles.size(); t++)
+    if(subdivision[t])
+      count[classOf(t)] += (std::size_t)subdivision[t] * subdivision[t];
+  std::vector<sampleClass *> byIndex(numClasses, nullptr);
+  for(int k = 0; k < numClasses; k++) {
+    if(!count[k]) continue;
+    _classes.emplace_back(new sampleClass);
+    byIndex[k] = _classes.back().get();
+    byIndex[k]->radius = largest / std::ldexp(1., k);
+    byIndex[k]->points = annAllocPts((int)count[k], 3);
+    byIndex[k]->triangle.reserve(count[k]);
+  }
   for(std::size_t t = 0; t < _triangles.size(); t++) {
     const int m = subdivision[t];
+    if(!m) continue;
+    sampleClass &c = *byIndex[classOf(t)];
+    const SPoint3 &a = _points[_triangles[t][0]],
+                  &b = _points[_triangles[t][1]],
+                  &p = _points[_triangles[t][2]];
+    auto addSample = [&](double v, double w) {
+      double *s = c.points[c.triangle.size()];
+      for(int k = 0; k < 3; k++)
+        s[k] = a[k] + v * (b[k] - a[k]) + w * (p[k] - a[k]);
+      c.triangle.push_back((int)t);
+    };
     for(int i = 0; i < m; i++)
       for(int j = 0; i + j < m; j++) {
         // sub-triangle with the same orientation as the triangle...
-        addSample((int)t, (i + 1. / 3.) / m, (j + 1. / 3.) / m);
+        addSample((i + 1. / 3.) / m, (j + 1. / 3.) / m);
         // ... and the reversed one next to it
-        if(i + j < m - 1)
-          addSample((int)t, (i + 2. / 3.) / m, (j + 2. / 3.) / m);
+        if(i + j < m - 1) addSample((i + 2. / 3.) / m, (j + 2. / 3.) / m);
       }
   }
-  _tree.reset(new ANNkd_tree(_samplePoints, (int)numSamples, 3));
+  for(auto &c : _classes)
+    c->tree.reset(new ANNkd_tree(c->points, (int)c->triangle.size(), 3));
 }
 
 closestTriangleSearch::~closestTriangleSearch()
 {
-  _tree.reset();
-  if(_samplePoints) annDeallocPts(_samplePoints);
+  for(auto &c : _classes) {
+    c->tree.reset();
+    annDeallocPts(c->points);
+  }
+}
+
+std::size_t closestTriangleSearch::numSamples() const
+{
+  std::size_t n = 0;
+  for(const auto &c : _classes) n += c->triangle.size();
+  return n;
 }
 
 double closestTriangleSearch::distanceTo(int t, const SPoint3 &p,
@@ -124,44 +155,49 @@ double closestTriangleSearch::distanceTo(int t, const SPoint3 &p,
   return p.distance(closest);
 }
 
-closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p) const
+void closestTriangleSearch::closer(const SPoint3 &p, std::vector<int> &candidates,
+                                   closestTriangleHit &hit) const
 {
-  closestTriangleHit hit;
-  if(!_tree) return hit;
-  double q[3] = {p.x(), p.y(), p.z()};
-  // the few nearest samples hold every candidate but in rare cases
-  const int k = std::min<int>(16, (int)_sampleTriangle.size());
-  ANNidx nearest[16];
-  ANNdist squared[16];
-  _tree->annkSearch(q, k, nearest, squared, 0.);
-  hit.triangle = _sampleTriangle[nearest[0]];
-  hit.distance = distanceTo(hit.triangle, p, hit.point);
-
-  // every triangle closer than hit.distance has a sample within this radius
-  double r = (hit.distance + _sampleRadius) * (1. + 1e-12);
-  std::vector<int> triangles;
-  if(k < (int)_sampleTriangle.size() && squared[k - 1] <= r * r) {
-    int count = _tree->annkFRSearch(q, r * r, 0);
-    std::vector<ANNidx> inside(count);
-    _tree->annkFRSearch(q, r * r, count, inside.data(), nullptr, 0.);
-    for(ANNidx s : inside) triangles.push_back(_sampleTriangle[s]);
-  }
-  else {
-    for(int i = 1; i < k && squared[i] <= r * r; i++)
-      triangles.push_back(_sampleTriangle[nearest[i]]);
-  }
-  std::sort(triangles.begin(), triangles.end());
-  triangles.erase(std::unique(triangles.begin(), triangles.end()),
-                  triangles.end());
-  for(int t : triangles) {
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()),
+                   candidates.end());
+  for(int t : candidates) {
     if(t == hit.triangle) continue;
     SPoint3 point;
     double d = distanceTo(t, p, point);
-    if(d < hit.distance) {
+    if(hit.triangle < 0 || d < hit.distance) {
       hit.triangle = t;
       hit.distance = d;
       hit.point = point;
     }
+  }
+}
+
+closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p) const
+{
+  closestTriangleHit hit;
+  std::vector<int> candidates = _hugeTriangles;
+  double q[3] = {p.x(), p.y(), p.z()};
+  // an upper bound: the triangles of the nearest samples of each class
+  for(const auto &c : _classes) {
+    const int k = std::min<int>(4, (int)c->triangle.size());
+    ANNidx nearest[4];
+    ANNdist squared[4];
+    c->tree->annkSearch(q, k, nearest, squared, 0.);
+    for(int i = 0; i < k; i++) candidates.push_back(c->triangle[nearest[i]]);
+  }
+  closer(p, candidates, hit);
+  // every triangle closer than the bound has a sample of its class within
+  // the bound plus the class radius
+  for(const auto &c : _classes) {
+    const double r = (hit.distance + c->radius) * (1. + 1e-12);
+    int count = c->tree->annkFRSearch(q, r * r, 0);
+    if(!count) continue;
+    std::vector<ANNidx> inside(count);
+    c->tree->annkFRSearch(q, r * r, count, inside.data(), nullptr, 0.);
+    candidates.clear();
+    for(ANNidx s : inside) candidates.push_back(c->triangle[s]);
+    closer(p, candidates, hit);
   }
   return hit;
 }
