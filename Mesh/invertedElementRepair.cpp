@@ -134,12 +134,16 @@ namespace {
     {
       GPoint p = gf->point(uv.x(), uv.y());
       if(!p.succeeded()) return false;
+      set(uv, SPoint3(p.x(), p.y(), p.z()));
+      return true;
+    }
+    void set(const SPoint2 &uv, const SPoint3 &xyz)
+    {
       v->setParameter(0, uv.x());
       v->setParameter(1, uv.y());
-      v->x() = p.x();
-      v->y() = p.y();
-      v->z() = p.z();
-      return true;
+      v->x() = xyz.x();
+      v->y() = xyz.y();
+      v->z() = xyz.z();
     }
     // Triangles around against the input, or -1 if one turned over in (u, v)
     int bad(const std::function<bool(MTriangle *)> &against) const
@@ -209,12 +213,7 @@ namespace {
           moved++;
           continue;
         }
-        // back where it was, exactly
-        v->setParameter(0, start.x());
-        v->setParameter(1, start.y());
-        v->x() = startXyz.x();
-        v->y() = startXyz.y();
-        v->z() = startXyz.z();
+        node.set(start, startXyz); // back where it was, exactly
       }
     }
     return moved;
