@@ -23,7 +23,6 @@
 #include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
-#include "triangleAdjacency.h"
 
 double mapCrowding(const std::vector<SPoint2> &uv,
                    const std::vector<SPoint3> &xyz,
@@ -157,12 +156,6 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
   int done = reparamTryParametrization(triangles, uv, xyz, nodes, check.reason);
   if(done <= 0) {
     check.ok = false;
-    // "Cannot parametrize triangulation (N triangles): why": the why
-    const std::string prefix = "Cannot parametrize triangulation";
-    std::size_t colon = check.reason.find("): ");
-    if(check.reason.compare(0, prefix.size(), prefix) == 0 &&
-       colon != std::string::npos)
-      check.reason = check.reason.substr(colon + 3);
     return check;
   }
   // The map squeezes part of the patch into a sliver of the (u, v) plane:
@@ -215,19 +208,13 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   };
   layoutResult layout = computePatchLayout(model.mesh, parameters, verify);
 
-  // The mesh edges between patches, on the boundary or non-manifold: Gmsh's
-  // classification then grows exactly these patches (sharp edges merged away
-  // with noise are no longer cuts)
-  triangleAdjacency adjacency = makeTriangleAdjacency(model.mesh.triangles);
+  // The cuts of the layout as lines: Gmsh's classification then grows
+  // exactly these patches (sharp edges merged away with noise are no
+  // longer cuts)
   for(MLine *l : lines) delete l;
   lines.clear();
-  for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
-    const int n = adjacency.numTriangles((int)e);
-    const int *t = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
-    if(n == 2 && layout.patch[t[0]] == layout.patch[t[1]]) continue;
-    lines.push_back(new MLine(model.nodes[adjacency.edges[e][0]],
-                              model.nodes[adjacency.edges[e][1]]));
-  }
+  for(const auto &e : layout.cutEdges)
+    lines.push_back(new MLine(model.nodes[e[0]], model.nodes[e[1]]));
 
   for(const layoutSplit &s : layout.splits)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "

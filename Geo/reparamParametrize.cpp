@@ -191,6 +191,7 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     }
     failure("Cannot parametrize triangulation (%lu triangles)%s: %s",
             triangles.size(), where.c_str(), err.what().c_str());
+    lastFailure = err.what(); // the layout names the part itself
     nodes.clear();
     return -1;
   }

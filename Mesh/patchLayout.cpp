@@ -114,6 +114,12 @@ layoutResult computePatchLayout(const layoutMesh &mesh,
             });
   splitUntilVerified(mesh, adjacency, parameters, verify, std::move(stack),
                      result);
+  for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+    const int n = adjacency.numTriangles((int)e);
+    const int *t = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
+    if(n != 2 || result.patch[t[0]] != result.patch[t[1]])
+      result.cutEdges.push_back(adjacency.edges[e]);
+  }
   result.cleanTime = t1 - t0;
   result.splitTime = TimeOfDay() - t1;
   return result;

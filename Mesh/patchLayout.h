@@ -66,6 +66,10 @@ struct layoutResult {
   // Final patches the verification still refuses (a single triangle, or the
   // depth bound reached), with its reason
   std::vector<std::pair<int, std::string> > unverified;
+  // The edges (node pairs) between two final patches, on the boundary or
+  // non-manifold: what a classification must not cross to grow these
+  // patches
+  std::vector<std::array<int, 2> > cutEdges;
   double cleanTime = 0., splitTime = 0.; // wall seconds
 };
 

@@ -118,6 +118,8 @@ TEST(patchLayout, noisePatchIsMergedAndItsPinchGoesWithIt)
   EXPECT_EQ(r.cleanedPatches, 1);
   EXPECT_EQ(r.numPatches, 1);
   EXPECT_TRUE(r.splits.empty());
+  // the spike's sharp edges are no longer cuts: only the grid's boundary
+  EXPECT_EQ(r.cutEdges.size(), 4u * 8u);
   expectDiskPatches(mesh, r);
 
   // Kept as a patch, it leaves the big one pinched: that one is cut
