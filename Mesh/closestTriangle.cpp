@@ -86,12 +86,15 @@ closestTriangleSearch::closestTriangleSearch(
       subdivision[t] = (int)std::ceil(radius[t] / meanRadius);
     largest = std::max(largest, radius[t] / subdivision[t]);
   }
-  // class k: sample radius in (largest / 2^(k+1), largest / 2^k]
-  const int numClasses = 24;
+  // class k: sample radius in (largest / 4^(k+1), largest / 4^k]: few
+  // classes (each costs a search per query), far enough apart that the
+  // dense tiny triangles do not share the radius of the large ones
+  const int numClasses = 12;
   auto classOf = [&](std::size_t t) {
     const double r = radius[t] / subdivision[t];
     if(!(r > 0.) || !(largest > 0.)) return numClasses - 1;
-    return std::min(numClasses - 1, (int)std::floor(std::log2(largest / r)));
+    return std::min(numClasses - 1,
+                    (int)std::floor(std::log2(largest / r) / 2.));
   };
   std::vector<std::size_t> count(numClasses, 0);
   for(std::size_t t = 0; t < _triangles.size(); t++)
@@ -102,7 +105,7 @@ closestTriangleSearch::closestTriangleSearch(
     if(!count[k]) continue;
     _classes.emplace_back(new sampleClass);
     byIndex[k] = _classes.back().get();
-    byIndex[k]->radius = largest / std::ldexp(1., k);
+    byIndex[k]->radius = largest / std::ldexp(1., 2 * k);
     byIndex[k]->points = annAllocPts((int)count[k], 3);
     byIndex[k]->triangle.reserve(count[k]);
   }
