@@ -37,10 +37,9 @@ class ANNkd_tree;
 // gathers within d + the class radius in each: one global radius made a
 // query among dense tiny triangles (CAD STL, slivers) gather thousands of
 // samples (41 s, now 29 s, for the report of a noisy 7436-triangle part;
-// halving classes: 26 s, but 30 % slower on scans).
-The few huge triangles among tiny
-// ones (over 64 times the mean size) are not sampled but measured at every
-// query.
+// halving classes: 26 s, but 30 % slower on scans). The few huge
+// triangles among tiny ones (over 64 times the mean size) are not sampled
+// but measured at every query.
 class closestTriangleSearch {
 public:
   closestTriangleSearch(const std::vector<SPoint3> &points,
