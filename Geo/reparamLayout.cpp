@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <unordered_map>
 #include "Context.h"
 #include "GModel.h"
@@ -20,9 +21,11 @@
 #include "GmshMessage.h"
 #include "OS.h"
 #include "patchLayout.h"
+#include "reparamCurveMesh.h"
 #include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
+#include "triangleAdjacency.h"
 
 double mapCrowding(const std::vector<SPoint2> &uv,
                    const std::vector<SPoint3> &xyz,
@@ -185,6 +188,31 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
   return check;
 }
 
+namespace {
+
+  // The cuts of the layout that are no sharp edge, boundary nor
+  // non-manifold edge: the curve meshes leave their turns alone
+  void recordSmoothCuts(const modelTriangulation &model,
+                        const layoutResult &layout)
+  {
+    std::set<std::array<int, 2> > sharp;
+    for(const auto &e : model.mesh.featureEdges)
+      sharp.insert({{std::min(e[0], e[1]), std::max(e[0], e[1])}});
+    const triangleAdjacency adjacency =
+      makeTriangleAdjacency(model.mesh.triangles);
+    std::vector<std::array<SPoint3, 2> > smooth;
+    for(const auto &e : layout.cutEdges) {
+      const std::array<int, 2> key = {{std::min(e[0], e[1]), std::max(e[0], e[1])}};
+      const int edge = adjacency.find(key[0], key[1]);
+      if(sharp.count(key) || edge < 0 || adjacency.numTriangles(edge) != 2)
+        continue;
+      smooth.push_back({{model.mesh.points[e[0]], model.mesh.points[e[1]]}});
+    }
+    reparamRecordSmoothCuts(smooth);
+  }
+
+} // namespace
+
 int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
 {
   const reparamOptions &options = getReparamOptions();
@@ -216,6 +244,8 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   for(const auto &e : layout.cutEdges)
     lines.push_back(new MLine(model.nodes[e[0]], model.nodes[e[1]]));
 
+  recordSmoothCuts(model, layout);
+
   for(const layoutSplit &s : layout.splits)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "
               "because %s",
@@ -228,7 +258,9 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
             layout.numPatches, layout.cleanTime, layout.splitTime,
             TimeOfDay() - t0);
   for(const auto &u : layout.unverified)
-    Msg::Warning("Reparam: a patch of the layout cannot be parametrized as it "
-                 "is (%s)", u.second.c_str());
+    // CreateGeometry then keeps its input triangles, with a warning naming
+    // the surface
+    Msg::Info("Reparam: a patch of the layout cannot be parametrized as it "
+              "is (%s)", u.second.c_str());
   return 1;
 }

@@ -35,6 +35,9 @@ struct reparamOptions {
   // Mesh.CompoundNoiseSize: the mesh size feature patches are noise against
   // (0: the edge of a uniform mesh with as many triangles as the input)
   double noiseSize = 0.;
+  // Mesh.CompoundCurveCorners: nodes of discrete curves on the input's
+  // corners
+  bool curveCorners = true;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none

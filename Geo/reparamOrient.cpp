@@ -8,16 +8,21 @@
 // comes out reversed (skull: 715 of 715 triangles of one face). Every
 // element votes here, against the input under it (meshFidelity::inverted).
 
+#include <cstdio>
 #include "GFace.h"
 #include "GmshMessage.h"
 #include "MElement.h"
 #include "meshFidelity.h"
+#include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamOrient.h"
 #include "reparamReport.h"
 
 bool reparamOrientMeshedFace(GFace *gf)
 {
+  // a face kept as its input triangles has the input's orientation, and no
+  // (u, v) for Gmsh's test to look at
+  if(keptAsInput(gf)) return true;
   // Gmsh's own map keeps Gmsh's own orientation: it is the reference
   if(getReparamOptions().parametrization ==
        (int)compoundParametrization::gmsh ||
@@ -41,9 +46,22 @@ bool reparamOrientMeshedFace(GFace *gf)
     report->fidelity.inverted = inverted;
     report->oriented = true;
   }
-  if(inverted)
+  if(inverted) {
+    // where, so that the user can look (a second search, only then)
+    const surfaceMesh mesh = surfaceMeshOf(gf);
+    const std::vector<std::size_t> against =
+      invertedElements(inputTriangulationOf(gf), mesh);
+    char where[96] = "";
+    if(!against.empty() && against[0] < mesh.triangles.size()) {
+      SPoint3 at(0., 0., 0.);
+      for(int n : mesh.triangles[against[0]]) at += mesh.points[n];
+      at *= 1. / 3.;
+      snprintf(where, sizeof(where), " (one at (%g, %g, %g))", at.x(), at.y(),
+               at.z());
+    }
     Msg::Warning("Reparam: surface %d: %lu of its %lu elements point against "
-                 "the input normals",
-                 gf->tag(), inverted, elements);
+                 "the input normals%s",
+                 gf->tag(), inverted, elements, where);
+  }
   return true;
 }

@@ -23,6 +23,7 @@
 #include "discretePatch.h"
 #include "holeFilling.h"
 #include "mapChain.h"
+#include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
 #include "reparamReport.h"
@@ -36,6 +37,9 @@ namespace {
   // Set while the patch layout tries a part: no log at all (a layout tries
   // hundreds of parts), the reason of a failure kept for its own message
   bool quiet = false;
+  // Set while a discrete face's CreateGeometry parametrizes it: a failure
+  // is an Info, the safety net's warning gives it (Geo/reparamInputMesh)
+  bool creatingFace = false;
   std::string lastFailure;
 
   void failure(const char *format, ...)
@@ -47,7 +51,7 @@ namespace {
     va_end(args);
     lastFailure = message;
     if(quiet) return;
-    if(checkingPatch)
+    if(checkingPatch || creatingFace)
       Msg::Info("Reparam: %s", message);
     else
       Msg::Error("%s", message);
@@ -132,6 +136,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<SPoint3> &stl_vertices_xyz,
                                   std::vector<int> &stl_triangles)
 {
+  creatingFace = reparamTakeFaceInCreation();
+  lastFailure.clear();
   const int choice = getReparamOptions().parametrization;
   // whatever happens below, an earlier record for these arrays is stale
   recordParametrization(stl_vertices_uv, nullptr);
@@ -419,3 +425,5 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
   recordParametrization(uv, nullptr); // local arrays: nothing to keep
   return done;
 }
+
+std::string reparamLastFailure() { return lastFailure; }

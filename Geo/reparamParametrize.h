@@ -24,4 +24,7 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<int> &triangleNodes,
                               std::string &why);
 
+// Why the last parametrization failed (for the safety net's warning)
+std::string reparamLastFailure();
+
 #endif

@@ -14,6 +14,7 @@
 #include "GmshMessage.h"
 #include "MElement.h"
 #include "OS.h"
+#include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 
@@ -160,7 +161,15 @@ void reparamReportMeshedModel(GModel *m)
     return;
   }
   const std::vector<int> missing = unparametrizedFaces(m);
-  if(reports.empty() && missing.empty()) return;
+  const std::vector<int> kept = facesKeptAsInput(m);
+  if(reports.empty() && missing.empty() && kept.empty()) return;
+  if(!kept.empty()) {
+    std::string list;
+    for(int tag : kept) list += (list.empty() ? "" : ", ") + std::to_string(tag);
+    Msg::Info("Reparam: %lu surface%s meshed with their input triangles (no "
+              "parametrization): %s",
+              kept.size(), kept.size() > 1 ? "s" : "", list.c_str());
+  }
   if(!missing.empty()) {
     std::string list;
     for(int tag : missing)
@@ -188,6 +197,8 @@ void reparamReportMeshedModel(GModel *m)
   if(!reports.empty())
     for(const std::string &line : reportTable(reports, whole.get()))
       Msg::Info("Reparam: %s", line.c_str());
+  const std::string farthest = farthestPointLine(reports, whole.get());
+  if(!farthest.empty()) Msg::Info("Reparam: %s", farthest.c_str());
   const std::string &file = getReparamOptions().reportFile;
   if(!file.empty()) {
     FILE *fp = Fopen(file.c_str(), "w");
@@ -195,7 +206,7 @@ void reparamReportMeshedModel(GModel *m)
       Msg::Error("Cannot write Mesh.CompoundReportFile '%s': %s", file.c_str(),
                  std::strerror(errno));
     else {
-      std::string json = reportJson(reports, missing, whole.get());
+      std::string json = reportJson(reports, missing, whole.get(), kept);
       fwrite(json.data(), 1, json.size(), fp);
       fclose(fp);
       Msg::Info("Reparam: report written to '%s'", file.c_str());

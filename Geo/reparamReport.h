@@ -81,13 +81,21 @@ void reparamReportMeshedModel(GModel *m);
 std::vector<int> unparametrizedFaces(GModel *m);
 
 // The table lines and the JSON text of `reports` (for the hook and tests);
-// the JSON lists `unmeshed` faces too. The total's distances are `whole`'s
+// the JSON lists `unmeshed` faces and the faces meshed with their input
+// triangles (`keptAsInput`) too. The total's distances are `whole`'s
 // when given (the faces' meshes against their inputs taken together), else
 // the largest and the element-weighted mean of the faces'.
 std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
                                      const meshFidelity *whole = nullptr);
+// Where the total's Hausdorff distance is reached, for the log: "largest
+// distance to the input D (P % of the diagonal) at (x, y, z): an input point
+// far from the mesh" (or "a mesh point far from the input"); empty without
+// an input
+std::string farthestPointLine(const std::vector<faceReport> &reports,
+                              const meshFidelity *whole = nullptr);
 std::string reportJson(const std::vector<faceReport> &reports,
                        const std::vector<int> &unmeshed = {},
-                       const meshFidelity *whole = nullptr);
+                       const meshFidelity *whole = nullptr,
+                       const std::vector<int> &keptAsInput = {});
 
 #endif

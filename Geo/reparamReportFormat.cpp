@@ -77,7 +77,11 @@ namespace {
       if(r.hasInput) {
         t.hasInput = true;
         t.inputBox += r.inputBox;
-        absoluteHausdorff = std::max(absoluteHausdorff, r.fidelity.hausdorff);
+        if(r.fidelity.hausdorff >= absoluteHausdorff) {
+          absoluteHausdorff = r.fidelity.hausdorff;
+          t.fidelity.farthest = r.fidelity.farthest;
+          t.fidelity.farthestOnInput = r.fidelity.farthestOnInput;
+        }
         meanDistanceSum += r.fidelity.meanDistance * r.fidelity.elements;
         sampled += r.fidelity.elements;
         t.fidelity.elements += r.fidelity.elements;
@@ -99,6 +103,8 @@ namespace {
       if(whole) {
         t.fidelity.hausdorff = whole->hausdorff;
         t.fidelity.meanDistance = whole->meanDistance;
+        t.fidelity.farthest = whole->farthest;
+        t.fidelity.farthestOnInput = whole->farthestOnInput;
       }
     }
     return t;
@@ -172,6 +178,12 @@ namespace {
                                                r.fidelity.diagonal) :
                              NAN);
     s += ", \"diagonal\": " + number(r.hasInput ? r.fidelity.diagonal : NAN);
+    if(r.hasInput) {
+      const SPoint3 &p = r.fidelity.farthest;
+      s += ", \"hausdorffAt\": [" + number(p.x()) + ", " + number(p.y()) +
+           ", " + number(p.z()) + "], \"hausdorffFrom\": \"" +
+           (r.fidelity.farthestOnInput ? "input" : "mesh") + "\"";
+    }
     s += ", \"inverted\": " +
          (r.hasInput ? std::to_string(r.fidelity.inverted) : "null");
     return s;
@@ -201,9 +213,27 @@ std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
   return lines;
 }
 
+std::string farthestPointLine(const std::vector<faceReport> &reports,
+                              const meshFidelity *whole)
+{
+  const faceReport t = total(reports, whole);
+  if(!t.hasInput) return "";
+  const meshFidelity &f = t.fidelity;
+  char line[256];
+  snprintf(line, sizeof(line),
+           "largest distance to the input %g (%.3g %% of the diagonal) at "
+           "(%g, %g, %g): %s",
+           f.hausdorff, percentOfDiagonal(f.hausdorff, f.diagonal),
+           f.farthest.x(), f.farthest.y(), f.farthest.z(),
+           f.farthestOnInput ? "an input point far from the mesh" :
+                               "a mesh point far from the input");
+  return line;
+}
+
 std::string reportJson(const std::vector<faceReport> &reports,
                        const std::vector<int> &unmeshed,
-                       const meshFidelity *whole)
+                       const meshFidelity *whole,
+                       const std::vector<int> &keptAsInput)
 {
   std::string s = "{\n  \"parametrizationOption\": " +
                   std::to_string(getReparamOptions().parametrization) +
@@ -232,6 +262,9 @@ std::string reportJson(const std::vector<faceReport> &reports,
   s += "\n  ],\n  \"unmeshedSurfaces\": [";
   for(std::size_t i = 0; i < unmeshed.size(); i++)
     s += (i ? ", " : "") + std::to_string(unmeshed[i]);
+  s += "],\n  \"inputKeptSurfaces\": [";
+  for(std::size_t i = 0; i < keptAsInput.size(); i++)
+    s += (i ? ", " : "") + std::to_string(keptAsInput[i]);
   s += "],\n  \"total\": {\"surfaces\": " + std::to_string(reports.size()) +
        ", " + jsonFields(total(reports, whole)) + "}\n}\n";
   return s;

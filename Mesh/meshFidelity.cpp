@@ -77,10 +77,14 @@ namespace {
 
   struct oneSided {
     double max = 0., sum = 0.;
+    SPoint3 at;
     std::size_t samples = 0;
-    void add(double d)
+    void add(double d, const SPoint3 &p)
     {
-      max = std::max(max, d);
+      if(d > max || !samples) {
+        max = d;
+        at = p;
+      }
       sum += d;
       samples++;
     }
@@ -94,17 +98,19 @@ namespace {
                      std::size_t *inverted = nullptr)
   {
     oneSided s;
-    for(const SPoint3 &p : from.points) s.add(search.closest(p).distance);
+    for(const SPoint3 &p : from.points) s.add(search.closest(p).distance, p);
     for(const auto &t : from.triangles) {
-      closestTriangleHit hit = search.closest(centroid<3>(from, t));
-      s.add(hit.distance);
+      const SPoint3 g = centroid<3>(from, t);
+      closestTriangleHit hit = search.closest(g);
+      s.add(hit.distance, g);
       if(inverted)
         *inverted +=
           pointsAgainst<3>(from, t, triangleNormal(from, t), to, search, hit);
     }
     for(const auto &q : from.quadrangles) {
-      closestTriangleHit hit = search.closest(centroid<4>(from, q));
-      s.add(hit.distance);
+      const SPoint3 g = centroid<4>(from, q);
+      closestTriangleHit hit = search.closest(g);
+      s.add(hit.distance, g);
       if(inverted)
         *inverted +=
           pointsAgainst<4>(from, q, quadrangleNormal(from, q), to, search, hit);
@@ -152,6 +158,8 @@ namespace {
   void combine(const oneSided &there, const oneSided &back, meshFidelity &f)
   {
     f.hausdorff = std::max(there.max, back.max);
+    f.farthestOnInput = back.max > there.max;
+    f.farthest = f.farthestOnInput ? back.at : there.at;
     f.meanDistance =
       0.5 * (there.sum / std::max<std::size_t>(1, there.samples) +
              back.sum / std::max<std::size_t>(1, back.samples));
@@ -221,18 +229,28 @@ meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output)
   return f;
 }
 
+std::vector<std::size_t> invertedElements(const surfaceMesh &input,
+                                          const surfaceMesh &output)
+{
+  std::vector<std::size_t> inverted;
+  if(input.triangles.empty()) return inverted;
+  closestTriangleSearch onInput(input.points, input.triangles);
+  for(std::size_t i = 0; i < output.triangles.size(); i++) {
+    const auto &t = output.triangles[i];
+    if(pointsAgainst<3>(output, t, triangleNormal(output, t), input, onInput,
+                        onInput.closest(centroid<3>(output, t))))
+      inverted.push_back(i);
+  }
+  for(std::size_t i = 0; i < output.quadrangles.size(); i++) {
+    const auto &q = output.quadrangles[i];
+    if(pointsAgainst<4>(output, q, quadrangleNormal(output, q), input, onInput,
+                        onInput.closest(centroid<4>(output, q))))
+      inverted.push_back(output.triangles.size() + i);
+  }
+  return inverted;
+}
+
 std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output)
 {
-  if(input.triangles.empty()) return 0;
-  closestTriangleSearch onInput(input.points, input.triangles);
-  std::size_t inverted = 0;
-  for(const auto &t : output.triangles)
-    inverted +=
-      pointsAgainst<3>(output, t, triangleNormal(output, t), input, onInput,
-                       onInput.closest(centroid<3>(output, t)));
-  for(const auto &q : output.quadrangles)
-    inverted +=
-      pointsAgainst<4>(output, q, quadrangleNormal(output, q), input, onInput,
-                       onInput.closest(centroid<4>(output, q)));
-  return inverted;
+  return invertedElements(input, output).size();
 }

@@ -39,6 +39,11 @@ struct meshFidelity {
   // two-sided distances over samples (nodes and element centroids of both
   // meshes), absolute; diagonal of the input's bounding box to relate them
   double hausdorff = 0., meanDistance = 0., diagonal = 0.;
+  // where the Hausdorff distance is reached, and on which side: a sample of
+  // the input far from the mesh (a corner or tip cut off) or of the mesh far
+  // from the input (a chord across a crease, a fold)
+  SPoint3 farthest;
+  bool farthestOnInput = false;
 };
 
 meshFidelity compareToInput(const surfaceMesh &input,
@@ -63,5 +68,10 @@ bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
 // Only meshFidelity::inverted (N + 1 closest-triangle searches per element
 // of N corners)
 std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output);
+
+// The elements meshFidelity::inverted counts, by index (triangles first,
+// then quadrangles)
+std::vector<std::size_t> invertedElements(const surfaceMesh &input,
+                                          const surfaceMesh &output);
 
 #endif

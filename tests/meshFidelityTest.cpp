@@ -160,3 +160,28 @@ TEST(meshFidelity, wholeModelDistancesIgnoreWhereFacesMeet)
   EXPECT_NEAR(whole.diagonal, std::sqrt(2.), 1e-14);
   EXPECT_EQ(whole.elements, grid.triangles.size());
 }
+
+TEST(meshFidelity, farthestPointIsWhereTheHausdorffDistanceIs)
+{
+  // the unit square as input; the output cuts its corner (1, 1) off: the
+  // input's corner is the farthest sample, sqrt(2) / 4 from the mesh
+  surfaceMesh input, output;
+  input.points = {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(1, 1, 0),
+                  SPoint3(0, 1, 0)};
+  input.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+  output.points = {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(1, 0.5, 0),
+                   SPoint3(0.5, 1, 0), SPoint3(0, 1, 0)};
+  output.triangles = {{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 4}}};
+  meshFidelity f = compareToInput(input, output);
+  EXPECT_NEAR(f.hausdorff, std::sqrt(2.) / 4., 1e-12);
+  EXPECT_TRUE(f.farthestOnInput);
+  EXPECT_NEAR(f.farthest.distance(SPoint3(1, 1, 0)), 0., 1e-12);
+
+  // the other way round, a mesh node lifted off the input plane by 0.3
+  output = input;
+  output.points[2] = SPoint3(1, 1, 0.3);
+  f = compareDistancesToInput({input}, {output});
+  EXPECT_NEAR(f.hausdorff, 0.3, 1e-12);
+  EXPECT_FALSE(f.farthestOnInput);
+  EXPECT_NEAR(f.farthest.distance(SPoint3(1, 1, 0.3)), 0., 1e-12);
+}

@@ -145,15 +145,17 @@ TEST(surfaceMeshQualityPlugin, kappaViewAndHistogramOfTheRemesh)
   }
   EXPECT_NEAR(sum / all.size(), k.mean, 1e-12);
   EXPECT_NEAR(min, k.min, 1e-12);
-  // 10 bins of 0.1, in % of the triangles; none below 0.7 (kappa min 0.74)
+  // 10 bins of 0.1, in % of the triangles; none below 0.5 (kappa min 0.55:
+  // the nodes on the corners of the dome's slots, 0.74 when Gmsh's even
+  // spacing cut them)
   ASSERT_EQ(histogram->NbSP, 10);
   double total = 0., below = 0.;
   for(int i = 0; i < 10; i++) {
     total += histogram->SP[4 * i + 3];
-    if(i < 7) below += histogram->SP[4 * i + 3];
+    if(i < 5) below += histogram->SP[4 * i + 3];
   }
   EXPECT_NEAR(total, 100., 1e-9);
-  EXPECT_GT(k.min, 0.7);
+  EXPECT_GT(k.min, 0.5);
   EXPECT_EQ(below, 0.);
   clearViews();
 }

@@ -9,8 +9,10 @@
 #include "GFace.h"
 #include "GModel.h"
 #include "MTriangle.h"
+#include "SVector3.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
+#include "reparamInputMesh.h"
 #include "reparamReport.h"
 #include "triangleQuality.h"
 
@@ -101,6 +103,31 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   EXPECT_TRUE(has(first, "\"etaMin\": null"));
 }
 
+TEST(reparamReport, farthestPointOfTheTotalIsTheWorstFaces)
+{
+  std::vector<faceReport> reports = {
+    face(1, {3}, 100, 0.5, 0.9, 150, 90., SPoint3(1, 0, 0), 0.1, 0.01, 0),
+    face(2, {3}, 300, 0.3, 0.8, 450, 80., SPoint3(3, 4, 0), 0.2, 0.02, 0)};
+  reports[0].fidelity.farthest = SPoint3(7, 7, 7);
+  reports[1].fidelity.farthest = SPoint3(1, 2, 3);
+  reports[1].fidelity.farthestOnInput = true;
+  EXPECT_EQ(farthestPointLine(reports),
+            "largest distance to the input 0.2 (4 % of the diagonal) at (1, "
+            "2, 3): an input point far from the mesh");
+  std::string total = reportJson(reports);
+  total = total.substr(total.find("\"total\""));
+  EXPECT_TRUE(has(total, "\"hausdorffAt\": [1, 2, 3], \"hausdorffFrom\": "
+                         "\"input\""))
+    << total;
+  // the whole model's distances, when given, are the total's
+  meshFidelity whole;
+  whole.hausdorff = 0.5;
+  whole.farthest = SPoint3(0, 0, 1);
+  EXPECT_EQ(farthestPointLine(reports, &whole),
+            "largest distance to the input 0.5 (10 % of the diagonal) at (0, "
+            "0, 1): a mesh point far from the input");
+}
+
 TEST(reparamReport, remeshReportsWhatEachStageDid)
 {
   gmsh::clear();
@@ -155,10 +182,11 @@ TEST(reparamReport, remeshReportsWhatEachStageDid)
   gmsh::option::setNumber("Mesh.CompoundReport", 1);
 }
 
-TEST(reparamReport, surfaceLeftWithoutParametrizationIsNamed)
+TEST(reparamReport, surfaceKeptAsItsInputIsNamed)
 {
   // A NaN coordinate in the classified dome: its CreateGeometry fails, the
-  // planar mesher skips it, and the report names the hole
+  // face keeps its input triangles, the NaN node moved to the mean of its
+  // neighbours, and the report names it
   gmsh::clear();
   gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
@@ -168,12 +196,21 @@ TEST(reparamReport, surfaceLeftWithoutParametrizationIsNamed)
   std::vector<std::pair<int, int> > surfaces;
   gmsh::model::getEntities(surfaces, 2);
   ASSERT_EQ(surfaces.size(), 1u);
-  std::vector<std::size_t> nodes;
+  std::vector<std::size_t> nodes, tags, elementNodes;
   std::vector<double> coords, params;
   gmsh::model::mesh::getNodes(nodes, coords, params, 2, surfaces[0].second);
   ASSERT_FALSE(nodes.empty());
+  gmsh::model::mesh::getElementsByType(2, tags, elementNodes,
+                                       surfaces[0].second);
+  std::size_t aroundNaN = 0;
+  for(std::size_t n : elementNodes) aroundNaN += n == nodes[0];
+  ASSERT_GT(aroundNaN, 0u);
+  double inputArea = 0.;
+  for(auto it = GModel::current()->firstFace();
+      it != GModel::current()->lastFace(); ++it)
+    for(MTriangle *t : (*it)->triangles) inputArea += t->getVolume();
   gmsh::model::mesh::setNode(nodes[0], {std::nan(""), 0., 0.}, {});
-  const std::string file = testing::TempDir() + "reparamReportHole.json";
+  const std::string file = testing::TempDir() + "reparamReportKept.json";
   std::remove(file.c_str());
   gmsh::option::setString("Mesh.CompoundReportFile", file);
   gmsh::model::mesh::createGeometry();
@@ -181,15 +218,42 @@ TEST(reparamReport, surfaceLeftWithoutParametrizationIsNamed)
   gmsh::option::setString("Mesh.CompoundReportFile", "");
   gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
 
-  EXPECT_EQ(unparametrizedFaces(GModel::current()),
+  EXPECT_TRUE(unparametrizedFaces(GModel::current()).empty());
+  EXPECT_EQ(facesKeptAsInput(GModel::current()),
             std::vector<int>{surfaces[0].second});
+  std::vector<std::size_t> keptTags, keptNodes;
+  gmsh::model::mesh::getElementsByType(2, keptTags, keptNodes,
+                                       surfaces[0].second);
+  // its triangles, the boundary's stitched to the curves' nodes: about as
+  // many, covering the same area, no NaN
+  EXPECT_NEAR((double)keptTags.size(), (double)tags.size(), 0.01 * tags.size());
+  auto area = [](const std::vector<std::size_t> &triangleNodes) {
+    double sum = 0.;
+    for(std::size_t i = 0; i + 2 < triangleNodes.size(); i += 3) {
+      std::vector<double> p[3], par;
+      for(int j = 0; j < 3; j++)
+        gmsh::model::mesh::getNode(triangleNodes[i + j], p[j], par);
+      SVector3 n = crossprod(SVector3(p[1][0] - p[0][0], p[1][1] - p[0][1],
+                                      p[1][2] - p[0][2]),
+                             SVector3(p[2][0] - p[0][0], p[2][1] - p[0][1],
+                                      p[2][2] - p[0][2]));
+      sum += 0.5 * n.norm();
+    }
+    return sum;
+  };
+  EXPECT_NEAR(area(keptNodes), inputArea, 1e-3 * inputArea);
+  gmsh::model::mesh::getNodes(nodes, coords, params, 2, surfaces[0].second);
+  for(double x : coords) EXPECT_TRUE(std::isfinite(x));
   std::ifstream in(file);
   ASSERT_TRUE(in.good()) << "no report written";
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_TRUE(has(text.str(), "\"surfaces\": [\n  ],"));
-  EXPECT_TRUE(has(text.str(), "\"unmeshedSurfaces\": [" +
+  EXPECT_TRUE(has(text.str(), "\"unmeshedSurfaces\": [],"));
+  EXPECT_TRUE(has(text.str(), "\"inputKeptSurfaces\": [" +
                                 std::to_string(surfaces[0].second) + "]"))
     << text.str();
   EXPECT_TRUE(has(reportJson({}, {2, 5}), "\"unmeshedSurfaces\": [2, 5]"));
+  EXPECT_TRUE(
+    has(reportJson({}, {}, nullptr, {3}), "\"inputKeptSurfaces\": [3]"));
 }

@@ -1,0 +1,41 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The safety net: a discrete face that no map can parametrize (its part of
+// the layout could not be verified, or CreateGeometry got another patch
+// than ClassifySurfaces' layout made) keeps its input triangles in the mesh,
+// stitched to the 1D meshes of its curves, with one warning naming it and
+// the reason, instead of being left out of the mesh (a hole). Hooks in
+// discreteFace::createGeometry and discreteFace::mesh (patches/0011).
+
+#ifndef REPARAM_INPUT_MESH_H
+#define REPARAM_INPUT_MESH_H
+
+#include <string>
+#include <vector>
+
+class GFace;
+class GModel;
+
+// Called by discreteFace::createGeometry before it parametrizes gf: a
+// failure of Reparam's maps is then no error, the reason kept for the
+// warning of reparamKeepInputMesh
+void reparamBeginFaceGeometry(GFace *gf);
+// Whether a face's CreateGeometry called the parametrization hook (which
+// asks once, on entry: a failure then is an Info, the reason kept)
+bool reparamTakeFaceInCreation();
+
+// Called when gf's parametrization failed: keeps a copy of its input
+// triangles and warns with the reason of the failure, true; false when
+// Reparam is not the one that parametrizes (Gmsh's own map), CreateGeometry
+// then reports its error
+bool reparamKeepInputMesh(GFace *gf);
+
+// Called by discreteFace::mesh: meshes a face kept above with its input triangles,
+// stitched to the nodes of its curves' 1D meshes; false for other faces
+bool reparamMeshFromInput(GFace *gf);
+
+// The faces of m meshed with their input triangles
+std::vector<int> facesKeptAsInput(GModel *m);
+bool keptAsInput(const GFace *gf);
+
+#endif

@@ -1,0 +1,34 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The 1D mesh of a discrete curve moved onto the corners of the input
+// polyline it follows. Gmsh places a discrete curve's nodes at even arc
+// lengths, so a segment cuts across a corner of the input (a crease turning,
+// a tip) and the surface meshes on both sides cut it too: the largest
+// distance to the input on CAD parts (gmsh2x_car_body: a 45 degree turn of a
+// crease, half a segment from the nearest node).
+
+#ifndef CURVE_CORNER_SNAP_H
+#define CURVE_CORNER_SNAP_H
+
+#include <functional>
+#include <vector>
+#include "SPoint3.h"
+
+// polyline: the input nodes of the curve, node i at parameter i (Gmsh's
+// discreteEdge). params: the 1D mesh nodes' parameters in increasing order,
+// both ends included (they do not move). Returns the new parameters, both
+// ends included: the curve's corners (input nodes where it turns by 40
+// degrees or more seen at half a segment's length, not edge by edge; the
+// sharpest of each segment, none within half a segment of the ends or of a
+// sharper one) become nodes, and each piece between them is meshed evenly
+// with as many segments as it had (at least one). Without a corner, params
+// as they are. `allowed`, when given, says which input nodes may be taken
+// (not one another curve took: two nodes there would make a degenerate
+// triangle); `corners` gets the ones taken.
+std::vector<double>
+snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
+                        const std::vector<double> &params,
+                        const std::function<bool(int)> &allowed = nullptr,
+                        std::vector<int> *corners = nullptr);
+
+#endif

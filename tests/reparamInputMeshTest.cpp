@@ -1,0 +1,163 @@
+// Reparam - the safety net: a face no map can parametrize keeps its input
+// triangles, stitched to its curves' 1D meshes, and the mesh stays whole
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <gtest/gtest.h>
+#include "GModel.h"
+#include "boundaryStitch.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
+#include "reparamInputMesh.h"
+
+namespace {
+
+  typedef std::map<std::pair<std::size_t, std::size_t>, int> edgeCount;
+
+  void countEdges(const std::vector<std::size_t> &nodes, edgeCount &edges)
+  {
+    for(std::size_t i = 0; i + 2 < nodes.size(); i += 3)
+      for(int k = 0; k < 3; k++) {
+        std::size_t a = nodes[i + k], b = nodes[i + (k + 1) % 3];
+        edges[std::make_pair(std::min(a, b), std::max(a, b))]++;
+      }
+  }
+
+  double area(const std::vector<SPoint3> &p, const std::array<int, 3> &t)
+  {
+    return 0.5 * crossprod(SVector3(p[t[0]], p[t[1]]), SVector3(p[t[0]], p[t[2]]))
+                   .norm();
+  }
+
+} // namespace
+
+TEST(boundaryStitch, inputBoundaryNodesGiveWayToTheCurvesNodes)
+{
+  // a 4 x 4 grid of the unit square; the curves' nodes: the corners (on
+  // input nodes) and two per side at 0.4 and 0.8 (between input nodes)
+  const testTriangulation grid = rectangleGrid(4, 4, 1., 1.);
+  std::vector<SPoint3> curve;
+  for(double s : {0., 0.4, 0.8}) {
+    curve.push_back(SPoint3(s, 0, 0));
+    curve.push_back(SPoint3(1, s, 0));
+    curve.push_back(SPoint3(1 - s, 1, 0));
+    curve.push_back(SPoint3(0, 1 - s, 0));
+  }
+  stitchedTriangulation st =
+    stitchToBoundaryNodes(grid.points, grid.triangles, curve, 1e-9);
+  EXPECT_EQ(st.unplacedNodes, 0u);
+  EXPECT_EQ(st.keptInputNodes, 0u);
+  EXPECT_EQ(st.turnedTriangles, 0u);
+  std::vector<SPoint3> all = grid.points;
+  all.insert(all.end(), curve.begin(), curve.end());
+  double covered = 0.;
+  std::map<std::pair<int, int>, int> edges;
+  for(const auto &t : st.triangles) {
+    covered += area(all, t);
+    EXPECT_GT(crossprod(SVector3(all[t[0]], all[t[1]]),
+                        SVector3(all[t[0]], all[t[2]]))
+                .z(),
+              0.);
+    for(int k = 0; k < 3; k++)
+      edges[std::make_pair(std::min(t[k], t[(k + 1) % 3]),
+                           std::max(t[k], t[(k + 1) % 3]))]++;
+  }
+  EXPECT_NEAR(covered, 1., 1e-12);
+  // the boundary: the 12 curve nodes' 12 segments, nothing else
+  int boundaryEdges = 0;
+  const int numInput = (int)grid.points.size();
+  for(const auto &e : edges) {
+    EXPECT_LE(e.second, 2);
+    if(e.second != 1) continue;
+    boundaryEdges++;
+    EXPECT_GE(e.first.first, numInput);
+    EXPECT_GE(e.first.second, numInput);
+  }
+  EXPECT_EQ(boundaryEdges, 12);
+}
+
+TEST(boundaryStitch, nodesOffTheBoundaryAreLeftOut)
+{
+  // the corners of a 2 x 2 grid and a node inside: the sides' middle nodes
+  // collapse onto corners, the node inside is left out
+  const testTriangulation grid = rectangleGrid(2, 2, 1., 1.);
+  const std::vector<SPoint3> curve = {SPoint3(0, 0, 0), SPoint3(1, 0, 0),
+                                      SPoint3(1, 1, 0), SPoint3(0, 1, 0),
+                                      SPoint3(0.5, 0.5, 0.)};
+  stitchedTriangulation st =
+    stitchToBoundaryNodes(grid.points, grid.triangles, curve, 1e-9);
+  EXPECT_EQ(st.unplacedNodes, 1u);
+  EXPECT_EQ(st.keptInputNodes, 0u);
+  std::vector<SPoint3> all = grid.points;
+  all.insert(all.end(), curve.begin(), curve.end());
+  double covered = 0.;
+  for(const auto &t : st.triangles) covered += area(all, t);
+  EXPECT_NEAR(covered, 1., 1e-12);
+}
+
+TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
+{
+  // an 8 x 8 grid of the unit square with a zero-area triangle (b, a, m)
+  // along the edge ab of the cells (4, 4) and (4, 3), m its midpoint (exact
+  // in binary): no map takes it, so its part of the layout is kept as it is
+  testTriangulation t = rectangleGrid(8, 8, 1., 1.);
+  auto id = [](int i, int j) { return j * 9 + i; };
+  const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
+  const int m = (int)t.points.size();
+  t.points.push_back((t.points[a] + t.points[b]) * 0.5);
+  auto it = std::find(t.triangles.begin(), t.triangles.end(),
+                      std::array<int, 3>{{below, b, a}});
+  ASSERT_NE(it, t.triangles.end());
+  *it = {{below, b, m}};
+  t.triangles.push_back({{below, m, a}});
+  t.triangles.push_back({{b, a, m}});
+
+  gmsh::clear();
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+  addDiscreteSurface(t);
+  gmsh::logger::start();
+  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+  gmsh::model::mesh::createGeometry();
+  gmsh::model::mesh::generate(2);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  gmsh::logger::stop();
+  int kept = 0;
+  for(const auto &l : log) {
+    EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+    kept += l.find("cannot be parametrized") != std::string::npos &&
+            l.find("Warning") != std::string::npos;
+  }
+  EXPECT_EQ(kept, 1);
+  EXPECT_EQ(facesKeptAsInput(GModel::current()).size(), 1u);
+
+  gmsh::vectorpair faces;
+  gmsh::model::getEntities(faces, 2);
+  edgeCount edges;
+  for(const auto &f : faces) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
+    EXPECT_GT(tags.size(), 0u) << "surface " << f.second << " unmeshed";
+    countEdges(nodes, edges);
+  }
+  // whole: the only free edges are on the square's sides
+  int inside = 0;
+  for(const auto &e : edges) {
+    EXPECT_LE(e.second, 2);
+    if(e.second != 1) continue;
+    std::vector<double> p1, p2, par;
+    gmsh::model::mesh::getNode(e.first.first, p1, par);
+    gmsh::model::mesh::getNode(e.first.second, p2, par);
+    auto onSide = [](const std::vector<double> &p) {
+      return std::fabs(p[0]) < 1e-12 || std::fabs(p[0] - 1) < 1e-12 ||
+             std::fabs(p[1]) < 1e-12 || std::fabs(p[1] - 1) < 1e-12;
+    };
+    inside += !(onSide(p1) && onSide(p2));
+  }
+  EXPECT_EQ(inside, 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+}
