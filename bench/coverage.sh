@@ -15,9 +15,10 @@
 #
 # Per mesh and map (bench/coverage.py): whole or not (no error, every
 # discrete surface meshed, as many boundary loops out as in), surfaces
-# meshed, boundary loops and non-manifold edges in and out, errors and
-# warnings in the log, Hausdorff distance (% of the diagonal) and inverted
-# elements from Mesh.CompoundReportFile, triangles, Reparam's layout (feature
+# meshed and kept as their input triangles (the safety net), boundary loops
+# and non-manifold edges in and out, errors and warnings in the log,
+# Hausdorff distance (% of the diagonal), inverted elements and kappa min
+# from Mesh.CompoundReportFile, triangles, Reparam's layout (feature
 # patches, after cleaning, final patches, splits, seconds) and CPU time;
 # then per map the meshes whole and the total CPU time.
 set -uo pipefail
