@@ -56,7 +56,7 @@ namespace {
     return faces;
   }
 
-  const GFace *faceInCreation = nullptr;
+  GFace *faceInCreation = nullptr;
 
   bool isFinite(const SPoint3 &p)
   {
@@ -140,9 +140,9 @@ void reparamBeginFaceGeometry(GFace *gf)
   faceInCreation = gf;
 }
 
-bool reparamTakeFaceInCreation()
+GFace *reparamTakeFaceInCreation()
 {
-  const bool creating = faceInCreation != nullptr;
+  GFace *creating = faceInCreation;
   faceInCreation = nullptr;
   return creating;
 }

@@ -20,9 +20,10 @@ class GModel;
 // failure of Reparam's maps is then no error, the reason kept for the
 // warning of reparamKeepInputMesh
 void reparamBeginFaceGeometry(GFace *gf);
-// Whether a face's CreateGeometry called the parametrization hook (which
-// asks once, on entry: a failure then is an Info, the reason kept)
-bool reparamTakeFaceInCreation();
+// The face whose CreateGeometry called the parametrization hook, if one
+// did (the hook asks once, on entry: a failure then is an Info, the reason
+// kept), else null
+GFace *reparamTakeFaceInCreation();
 
 // Called when gf's parametrization failed: keeps a copy of its input
 // triangles and warns with the reason of the failure, true; false when

@@ -12,6 +12,7 @@
 #include <string>
 #include <unordered_map>
 #include "GEntity.h"
+#include "GFace.h"
 #include "GModel.h"
 #include "MLine.h"
 #include "MTriangle.h"
@@ -23,6 +24,7 @@
 #include "discretePatch.h"
 #include "holeFilling.h"
 #include "mapChain.h"
+#include "reparamConePoints.h"
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
@@ -39,7 +41,7 @@ namespace {
   bool quiet = false;
   // Set while a discrete face's CreateGeometry parametrizes it: a failure
   // is an Info, the safety net's warning gives it (Geo/reparamInputMesh)
-  bool creatingFace = false;
+  GFace *creatingFace = nullptr;
   std::string lastFailure;
 
   void failure(const char *format, ...)
@@ -329,6 +331,10 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   record.solveTime = map.solveTime;
   record.checkTime = checkTime;
   recordParametrization(stl_vertices_uv, &record);
+  // the face's tips become mesh nodes (points embedded in it)
+  if(creatingFace)
+    reparamEmbedConePoints(creatingFace, nodes, stl_vertices_xyz,
+                           stl_triangles);
   if(!quiet)
     Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
             "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "
