@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cmath>
+#include <set>
+#include <tuple>
 #include "GFace.h"
 #include "GModel.h"
 #include "GmshMessage.h"
@@ -9,6 +11,31 @@
 #include "conePoints.h"
 #include "discreteVertex.h"
 #include "reparamConePoints.h"
+
+namespace {
+
+  typedef std::array<double, 6> edgeByCoordinates;
+
+  edgeByCoordinates byCoordinates(const SPoint3 &a, const SPoint3 &b)
+  {
+    const bool aFirst = std::make_tuple(a.x(), a.y(), a.z()) <
+                        std::make_tuple(b.x(), b.y(), b.z());
+    const SPoint3 &p = aFirst ? a : b, &q = aFirst ? b : a;
+    return {{p.x(), p.y(), p.z(), q.x(), q.y(), q.z()}};
+  }
+
+  std::set<edgeByCoordinates> mergedCreases;
+  double layoutSize = 0.;
+
+} // namespace
+
+void reparamRecordMergedCreases(const std::vector<std::array<SPoint3, 2> > &edges,
+                                double size)
+{
+  mergedCreases.clear();
+  for(const auto &e : edges) mergedCreases.insert(byCoordinates(e[0], e[1]));
+  layoutSize = size;
+}
 
 int reparamEmbedConePoints(GFace *gf, const std::vector<MVertex *> &nodes,
                            const std::vector<SPoint3> &points,
@@ -20,7 +47,20 @@ int reparamEmbedConePoints(GFace *gf, const std::vector<MVertex *> &nodes,
   // Sharper than a cone of half-angle 30 degrees (angles summing to pi):
   // a bump of a smooth surface sums to nearly 2 pi, a cube's corner (on
   // curves anyway) to 3 pi / 2
-  const std::vector<int> tips = conePoints(points, triangles, M_PI);
+  std::vector<int> tips = conePoints(points, triangles, M_PI);
+  std::vector<int> corners;
+  if(!mergedCreases.empty())
+    corners = creaseCorners(points, triangles, [&points](int a, int b) {
+      return mergedCreases.count(byCoordinates(points[a], points[b])) > 0;
+    });
+  tips.insert(tips.end(), corners.begin(), corners.end());
+  // a node closer than half the layout's size to gf's curves or to another
+  // kept one would only make small triangles: the mesh passes near it
+  std::vector<SPoint3> taken;
+  for(std::size_t i = 0; i < points.size() && i < nodes.size(); i++) {
+    GEntity *on = nodes[i]->onWhat();
+    if(on && on->dim() < 2) taken.push_back(points[i]);
+  }
   GModel *m = gf->model();
   int added = 0;
   for(int i : tips) {
@@ -31,6 +71,10 @@ int reparamEmbedConePoints(GFace *gf, const std::vector<MVertex *> &nodes,
     for(GVertex *v : gf->embeddedVertices())
       there = there || (v->x() == p.x() && v->y() == p.y() && v->z() == p.z());
     if(there) continue;
+    bool near = false;
+    for(const SPoint3 &q : taken) near = near || p.distance(q) < 0.5 * layoutSize;
+    if(near) continue;
+    taken.push_back(p);
     discreteVertex *v = new discreteVertex(
       m, m->getMaxElementaryNumber(0) + 1, p.x(), p.y(), p.z());
     m->add(v);

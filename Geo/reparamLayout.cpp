@@ -21,6 +21,7 @@
 #include "GmshMessage.h"
 #include "OS.h"
 #include "patchLayout.h"
+#include "reparamConePoints.h"
 #include "reparamCurveMesh.h"
 #include "reparamLayout.h"
 #include "reparamOptions.h"
@@ -211,6 +212,21 @@ namespace {
     reparamRecordSmoothCuts(smooth);
   }
 
+  // The sharp edges the noise merge took inside a patch: their corners are
+  // kept as mesh nodes (Geo/reparamConePoints.cpp)
+  void recordMergedCreases(const modelTriangulation &model,
+                           const layoutResult &layout, double size)
+  {
+    std::set<std::array<int, 2> > cuts;
+    for(const auto &e : layout.cutEdges)
+      cuts.insert({{std::min(e[0], e[1]), std::max(e[0], e[1])}});
+    std::vector<std::array<SPoint3, 2> > merged;
+    for(const auto &e : model.mesh.featureEdges)
+      if(!cuts.count({{std::min(e[0], e[1]), std::max(e[0], e[1])}}))
+        merged.push_back({{model.mesh.points[e[0]], model.mesh.points[e[1]]}});
+    reparamRecordMergedCreases(merged, size);
+  }
+
 } // namespace
 
 int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
@@ -245,6 +261,7 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     lines.push_back(new MLine(model.nodes[e[0]], model.nodes[e[1]]));
 
   recordSmoothCuts(model, layout);
+  recordMergedCreases(model, layout, 8. * parameters.noiseWidth);
 
   for(const layoutSplit &s : layout.splits)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "

@@ -1,6 +1,7 @@
 // Reparam - tips of a triangulation kept as mesh nodes
 
 #include <cmath>
+#include <set>
 #include <gtest/gtest.h>
 #include "conePoints.h"
 #include "gmsh.h"
@@ -89,4 +90,18 @@ TEST(conePoints, meshHasANodeAtTheTip)
   }
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
   gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+}
+
+TEST(conePoints, creaseCornersAreWhereThreeCreasesMeet)
+{
+  // a 4 x 4 grid; creases from its middle node 12 to three neighbours, and
+  // two from node 6: only node 12 is a corner
+  testTriangulation grid = rectangleGrid(4, 4, 1., 1.);
+  const std::set<std::pair<int, int> > creases = {
+    {7, 12}, {11, 12}, {12, 13}, {1, 6}, {6, 11}};
+  auto isCrease = [&creases](int a, int b) {
+    return creases.count({std::min(a, b), std::max(a, b)}) > 0;
+  };
+  EXPECT_EQ(creaseCorners(grid.points, grid.triangles, isCrease),
+            std::vector<int>{12});
 }
