@@ -3,26 +3,16 @@
 #include <array>
 #include <cmath>
 #include <set>
-#include <tuple>
 #include "GFace.h"
 #include "GModel.h"
 #include "GmshMessage.h"
 #include "MVertex.h"
 #include "conePoints.h"
+#include "edgeByCoordinates.h"
 #include "discreteVertex.h"
 #include "reparamConePoints.h"
 
 namespace {
-
-  typedef std::array<double, 6> edgeByCoordinates;
-
-  edgeByCoordinates byCoordinates(const SPoint3 &a, const SPoint3 &b)
-  {
-    const bool aFirst = std::make_tuple(a.x(), a.y(), a.z()) <
-                        std::make_tuple(b.x(), b.y(), b.z());
-    const SPoint3 &p = aFirst ? a : b, &q = aFirst ? b : a;
-    return {{p.x(), p.y(), p.z(), q.x(), q.y(), q.z()}};
-  }
 
   std::set<edgeByCoordinates> mergedCreases;
   double layoutSize = 0.;

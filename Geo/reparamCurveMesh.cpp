@@ -3,27 +3,17 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <tuple>
 #include "GEdge.h"
 #include "GModel.h"
 #include "GVertex.h"
 #include "GmshMessage.h"
 #include "MVertex.h"
 #include "curveCornerSnap.h"
+#include "edgeByCoordinates.h"
 #include "reparamCurveMesh.h"
 #include "reparamOptions.h"
 
 namespace {
-
-  typedef std::array<double, 6> edgeByCoordinates;
-
-  edgeByCoordinates byCoordinates(const SPoint3 &a, const SPoint3 &b)
-  {
-    const bool aFirst = std::make_tuple(a.x(), a.y(), a.z()) <
-                        std::make_tuple(b.x(), b.y(), b.z());
-    const SPoint3 &p = aFirst ? a : b, &q = aFirst ? b : a;
-    return {{p.x(), p.y(), p.z(), q.x(), q.y(), q.z()}};
-  }
 
   // The input nodes a curve's mesh took as corners, and which curve: two
   // curves through the same input node (non-manifold input) must not both

@@ -4,6 +4,7 @@
 #include <set>
 #include <gtest/gtest.h>
 #include "conePoints.h"
+#include "edgeByCoordinates.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 
@@ -64,14 +65,7 @@ TEST(conePoints, apexOfASharpConeOnly)
 TEST(conePoints, meshHasANodeAtTheTip)
 {
   // meshed coarsely, the cone keeps its apex: a point embedded in its face
-  gmsh::clear();
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.4);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.4);
-  addDiscreteSurface(cone(12, 48, 3.));
-  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
-  gmsh::model::mesh::createGeometry();
-  gmsh::model::mesh::generate(2);
+  remeshWithRecipe(cone(12, 48, 3.), 0.4);
   std::vector<std::size_t> tags;
   std::vector<double> coords, params;
   gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, true);
@@ -80,16 +74,8 @@ TEST(conePoints, meshHasANodeAtTheTip)
     nearest = std::min(nearest, std::hypot(coords[i], coords[i + 1],
                                            coords[i + 2] - 3.));
   EXPECT_LT(nearest, 1e-12);
-  // and no element of the surfaces is degenerate around it
-  gmsh::vectorpair faces;
-  gmsh::model::getEntities(faces, 2);
-  for(const auto &f : faces) {
-    std::vector<std::size_t> elements, nodes;
-    gmsh::model::mesh::getElementsByType(2, elements, nodes, f.second);
-    EXPECT_GT(elements.size(), 0u);
-  }
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  // and every surface is meshed
+  EXPECT_TRUE(surfacesWithoutElements().empty());
 }
 
 TEST(conePoints, creaseCornersAreWhereThreeCreasesMeet)
@@ -104,4 +90,12 @@ TEST(conePoints, creaseCornersAreWhereThreeCreasesMeet)
   };
   EXPECT_EQ(creaseCorners(grid.points, grid.triangles, isCrease),
             std::vector<int>{12});
+}
+
+TEST(edgeByCoordinates, sameEdgeWhateverTheOrderOfItsEnds)
+{
+  const SPoint3 a(1, 2, 3), b(1, 2, 4), c(0, 5, 5);
+  EXPECT_EQ(byCoordinates(a, b), byCoordinates(b, a));
+  EXPECT_EQ(byCoordinates(a, b), (edgeByCoordinates{{1, 2, 3, 1, 2, 4}}));
+  EXPECT_NE(byCoordinates(a, b), byCoordinates(a, c));
 }

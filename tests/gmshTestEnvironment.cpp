@@ -1,5 +1,6 @@
 // Reparam - helpers for tests that run inside Gmsh (through its API)
 
+#include <map>
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 #include "GModel.h"
@@ -98,4 +99,61 @@ int addDiscreteSurface(const testTriangulation &t)
     for(int n : tri) nodes.push_back(n + 1);
   gmsh::model::mesh::addElementsByType(surface, 2, {}, nodes);
   return surface;
+}
+
+std::vector<std::string> remeshWithRecipe(const testTriangulation &t,
+                                          double size)
+{
+  gmsh::clear();
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  addDiscreteSurface(t);
+  gmsh::logger::start();
+  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+  gmsh::model::mesh::createGeometry();
+  gmsh::model::mesh::generate(2);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  gmsh::logger::stop();
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  return log;
+}
+
+std::vector<std::pair<std::size_t, std::size_t> >
+freeMeshEdges(std::size_t *nonManifold)
+{
+  std::map<std::pair<std::size_t, std::size_t>, int> uses;
+  gmsh::vectorpair faces;
+  gmsh::model::getEntities(faces, 2);
+  for(const auto &f : faces) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
+    for(std::size_t i = 0; i + 2 < nodes.size(); i += 3)
+      for(int k = 0; k < 3; k++) {
+        std::size_t a = nodes[i + k], b = nodes[i + (k + 1) % 3];
+        uses[std::make_pair(std::min(a, b), std::max(a, b))]++;
+      }
+  }
+  std::vector<std::pair<std::size_t, std::size_t> > free;
+  if(nonManifold) *nonManifold = 0;
+  for(const auto &e : uses) {
+    if(e.second == 1) free.push_back(e.first);
+    if(e.second > 2 && nonManifold) (*nonManifold)++;
+  }
+  return free;
+}
+
+std::vector<int> surfacesWithoutElements()
+{
+  std::vector<int> empty;
+  gmsh::vectorpair faces;
+  gmsh::model::getEntities(faces, 2);
+  for(const auto &f : faces) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
+    if(tags.empty()) empty.push_back(f.second);
+  }
+  return empty;
 }

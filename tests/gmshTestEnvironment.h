@@ -41,4 +41,18 @@ std::string tutorialFile(const std::string &name);
 // nodes (tagged from 1) and triangles; returns its tag
 int addDiscreteSurface(const testTriangulation &t);
 
+// The STL recipe on t in a cleared model: the automatic map, a uniform
+// size, ClassifySurfaces{40 deg, 1, 1, 180 deg}, CreateGeometry, Mesh 2;
+// returns the log. The size options are reset after.
+std::vector<std::string> remeshWithRecipe(const testTriangulation &t,
+                                          double size);
+
+// The surfaces of the current model without any element
+std::vector<int> surfacesWithoutElements();
+
+// The edges of the current model's surface triangles used by one triangle
+// only (node tags, smaller first), and by more than two
+std::vector<std::pair<std::size_t, std::size_t> > freeMeshEdges(
+  std::size_t *nonManifold = nullptr);
+
 #endif

@@ -245,40 +245,17 @@ TEST(patchLayout, coarseCadFacesAreNotNoise)
 TEST(patchLayout, classifySurfacesMeshesClosedSurfacesWhole)
 {
   for(const testTriangulation &t : {sphere(48, 24), torus(64, 16, 2., 0.6)}) {
-    gmsh::clear();
-    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
-    addDiscreteSurface(t);
-    gmsh::logger::start();
-    gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
-    gmsh::model::mesh::createGeometry();
-    gmsh::model::mesh::generate(2);
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
-    gmsh::logger::stop();
-    for(const auto &l : log) EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+    for(const auto &l : remeshWithRecipe(t, 0.1))
+      EXPECT_EQ(l.find("Error"), std::string::npos) << l;
     gmsh::vectorpair faces;
     gmsh::model::getEntities(faces, 2);
     EXPECT_GE(faces.size(), 2u);
-    std::map<std::pair<std::size_t, std::size_t>, int> edges;
-    for(const auto &f : faces) {
-      std::vector<std::size_t> tags, nodes;
-      gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
-      EXPECT_GT(tags.size(), 0u) << "surface " << f.second << " unmeshed";
-      for(std::size_t i = 0; i < nodes.size(); i += 3)
-        for(int k = 0; k < 3; k++) {
-          std::size_t a = nodes[i + k], b = nodes[i + (k + 1) % 3];
-          edges[std::make_pair(std::min(a, b), std::max(a, b))]++;
-        }
-    }
+    EXPECT_TRUE(surfacesWithoutElements().empty());
     // closed: every edge of the new mesh has two triangles (no hole)
-    int open = 0;
-    for(const auto &e : edges) open += e.second != 2;
-    EXPECT_EQ(open, 0);
+    std::size_t nonManifold = 0;
+    EXPECT_TRUE(freeMeshEdges(&nonManifold).empty());
+    EXPECT_EQ(nonManifold, 0u);
   }
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
 }
 
 TEST(patchLayout, crowdingIsTheSmallestAreaShareRatio)

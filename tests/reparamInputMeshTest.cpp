@@ -13,17 +13,6 @@
 
 namespace {
 
-  typedef std::map<std::pair<std::size_t, std::size_t>, int> edgeCount;
-
-  void countEdges(const std::vector<std::size_t> &nodes, edgeCount &edges)
-  {
-    for(std::size_t i = 0; i + 2 < nodes.size(); i += 3)
-      for(int k = 0; k < 3; k++) {
-        std::size_t a = nodes[i + k], b = nodes[i + (k + 1) % 3];
-        edges[std::make_pair(std::min(a, b), std::max(a, b))]++;
-      }
-  }
-
   double area(const std::vector<SPoint3> &p, const std::array<int, 3> &t)
   {
     return 0.5 * crossprod(SVector3(p[t[0]], p[t[1]]), SVector3(p[t[0]], p[t[2]]))
@@ -113,18 +102,7 @@ TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
   t.triangles.push_back({{below, m, a}});
   t.triangles.push_back({{b, a, m}});
 
-  gmsh::clear();
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
-  addDiscreteSurface(t);
-  gmsh::logger::start();
-  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
-  gmsh::model::mesh::createGeometry();
-  gmsh::model::mesh::generate(2);
-  std::vector<std::string> log;
-  gmsh::logger::get(log);
-  gmsh::logger::stop();
+  const std::vector<std::string> log = remeshWithRecipe(t, 0.1);
   int kept = 0;
   for(const auto &l : log) {
     EXPECT_EQ(l.find("Error"), std::string::npos) << l;
@@ -134,30 +112,20 @@ TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
   EXPECT_EQ(kept, 1);
   EXPECT_EQ(facesKeptAsInput(GModel::current()).size(), 1u);
 
-  gmsh::vectorpair faces;
-  gmsh::model::getEntities(faces, 2);
-  edgeCount edges;
-  for(const auto &f : faces) {
-    std::vector<std::size_t> tags, nodes;
-    gmsh::model::mesh::getElementsByType(2, tags, nodes, f.second);
-    EXPECT_GT(tags.size(), 0u) << "surface " << f.second << " unmeshed";
-    countEdges(nodes, edges);
-  }
-  // whole: the only free edges are on the square's sides
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  // whole: no edge of three triangles, the only free edges on the sides
+  std::size_t nonManifold = 0;
   int inside = 0;
-  for(const auto &e : edges) {
-    EXPECT_LE(e.second, 2);
-    if(e.second != 1) continue;
+  for(const auto &e : freeMeshEdges(&nonManifold)) {
     std::vector<double> p1, p2, par;
-    gmsh::model::mesh::getNode(e.first.first, p1, par);
-    gmsh::model::mesh::getNode(e.first.second, p2, par);
+    gmsh::model::mesh::getNode(e.first, p1, par);
+    gmsh::model::mesh::getNode(e.second, p2, par);
     auto onSide = [](const std::vector<double> &p) {
       return std::fabs(p[0]) < 1e-12 || std::fabs(p[0] - 1) < 1e-12 ||
              std::fabs(p[1]) < 1e-12 || std::fabs(p[1] - 1) < 1e-12;
     };
     inside += !(onSide(p1) && onSide(p2));
   }
+  EXPECT_EQ(nonManifold, 0u);
   EXPECT_EQ(inside, 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
 }
