@@ -212,6 +212,26 @@ namespace {
     reparamRecordSmoothCuts(smooth);
   }
 
+  // The nodes where three cut edges or more meet: where two boundary loops
+  // touch (gmsh2x_car_body), or a cut ends on another. Gmsh ends its curves
+  // only where the edges of one pair of faces branch, so two curves could
+  // pass through such a node without a model point there, and their meshes
+  // would not meet: Gmsh's classification asks reparamBreakCurveAt
+  std::set<const MVertex *> junctions;
+
+  void recordJunctions(const modelTriangulation &model,
+                       const layoutResult &layout)
+  {
+    junctions.clear();
+    std::vector<int> degree(model.nodes.size(), 0);
+    for(const auto &e : layout.cutEdges) {
+      degree[e[0]]++;
+      degree[e[1]]++;
+    }
+    for(std::size_t i = 0; i < degree.size(); i++)
+      if(degree[i] >= 3) junctions.insert(model.nodes[i]);
+  }
+
   // The sharp edges the noise merge took inside a patch: their corners are
   // kept as mesh nodes (Geo/reparamConePoints.cpp)
   void recordMergedCreases(const modelTriangulation &model,
@@ -229,8 +249,13 @@ namespace {
 
 } // namespace
 
+bool reparamBreakCurveAt(MVertex *v) { return junctions.count(v) > 0; }
+
+void reparamForgetJunctions() { junctions.clear(); }
+
 int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
 {
+  junctions.clear();
   const reparamOptions &options = getReparamOptions();
   if(options.parametrization == (int)compoundParametrization::gmsh ||
      !options.layout)
@@ -261,6 +286,7 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     lines.push_back(new MLine(model.nodes[e[0]], model.nodes[e[1]]));
 
   recordSmoothCuts(model, layout);
+  recordJunctions(model, layout);
   recordMergedCreases(model, layout, 8. * parameters.noiseWidth);
 
   for(const layoutSplit &s : layout.splits)

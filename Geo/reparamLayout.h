@@ -44,4 +44,13 @@ layoutParameters reparamLayoutParameters(const layoutMesh &mesh);
 // its boundary
 partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles);
 
+// Whether Gmsh's classification must end a curve at node v (patches/0012):
+// three cut edges or more of the last layout meet there (two boundary loops
+// touching, a cut ending on another), so that the curves through it share
+// a model point and their meshes meet there
+class MVertex;
+bool reparamBreakCurveAt(MVertex *v);
+// Forgets the last layout's nodes (CreateGeometry: the curves are made)
+void reparamForgetJunctions();
+
 #endif

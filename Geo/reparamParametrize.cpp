@@ -26,6 +26,7 @@
 #include "mapChain.h"
 #include "reparamConePoints.h"
 #include "reparamInputMesh.h"
+#include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
 #include "reparamReport.h"
@@ -139,6 +140,9 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<int> &stl_triangles)
 {
   creatingFace = reparamTakeFaceInCreation();
+  // the curves are made once faces get their geometry: the layout's
+  // junctions are of no more use (and their nodes may go)
+  if(creatingFace) reparamForgetJunctions();
   lastFailure.clear();
   const int choice = getReparamOptions().parametrization;
   // whatever happens below, an earlier record for these arrays is stale

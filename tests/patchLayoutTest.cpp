@@ -333,3 +333,35 @@ TEST(patchLayout, largenessComparesTheAreaWithTheDiskOfTheBoundary)
   EXPECT_GT(largeness(sock), reparamMaxLargeness);
   EXPECT_LT(largeness(sphericalCap(40, 64, 0.5 * M_PI)), reparamMaxLargeness);
 }
+
+TEST(patchLayout, holesTouchingAtANodeStillTouchInTheMesh)
+{
+  // two square holes of a 6 x 6 grid touching at the node (1/3, 1/3): the
+  // curves around them end there (patches/0012), so the new mesh has a node
+  // there too, with the four boundary edges of both holes
+  testTriangulation t = gridWithout(6, {{1, 1}, {2, 2}});
+  testTriangulation used; // without the nodes of no triangle
+  std::map<int, int> index;
+  for(auto &tri : t.triangles)
+    for(int &n : tri) {
+      auto it = index.insert({n, (int)used.points.size()});
+      if(it.second) used.points.push_back(t.points[n]);
+      n = it.first->second;
+    }
+  used.triangles = t.triangles;
+  for(const auto &l : remeshWithRecipe(used, 0.08))
+    EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  std::map<std::size_t, int> freeEdgesAt;
+  for(const auto &e : freeMeshEdges()) {
+    freeEdgesAt[e.first]++;
+    freeEdgesAt[e.second]++;
+  }
+  int atPinch = 0;
+  for(const auto &n : freeEdgesAt) {
+    std::vector<double> p, par;
+    gmsh::model::mesh::getNode(n.first, p, par);
+    if(std::hypot(p[0] - 1. / 3., p[1] - 1. / 3.) < 1e-12) atPinch = n.second;
+  }
+  EXPECT_EQ(atPinch, 4);
+}
