@@ -27,6 +27,13 @@ void reparamRecordMergedCreases(const std::vector<std::array<SPoint3, 2> > &edge
   layoutSize = size;
 }
 
+bool reparamIsMergedCrease(const SPoint3 &a, const SPoint3 &b)
+{
+  return mergedCreases.count(byCoordinates(a, b)) > 0;
+}
+
+double reparamLayoutNoiseSize() { return layoutSize; }
+
 int reparamEmbedConePoints(GFace *gf, const std::vector<MVertex *> &nodes,
                            const std::vector<SPoint3> &points,
                            const std::vector<int> &triangleNodes)

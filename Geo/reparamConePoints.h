@@ -21,6 +21,9 @@ class MVertex;
 // layout measured noise with
 void reparamRecordMergedCreases(const std::vector<std::array<SPoint3, 2> > &edges,
                                 double size);
+// Whether (a, b) is one of those edges; the layout's noise size
+bool reparamIsMergedCrease(const SPoint3 &a, const SPoint3 &b);
+double reparamLayoutNoiseSize();
 
 // gf's input nodes (as CreateGeometry parametrized them), their points and
 // its triangles (3 node indices each): the nodes whose angles sum to less

@@ -25,6 +25,7 @@
 #include "holeFilling.h"
 #include "mapChain.h"
 #include "reparamConePoints.h"
+#include "reparamCreaseCurves.h"
 #include "reparamInputMesh.h"
 #include "reparamLayout.h"
 #include "reparamOptions.h"
@@ -335,10 +336,14 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   record.solveTime = map.solveTime;
   record.checkTime = checkTime;
   recordParametrization(stl_vertices_uv, &record);
-  // the face's tips become mesh nodes (points embedded in it)
-  if(creatingFace)
+  // the face's tips become mesh nodes (points embedded in it)...
+  if(creatingFace) {
     reparamEmbedConePoints(creatingFace, nodes, stl_vertices_xyz,
                            stl_triangles);
+    // and its sharp creases left inside it become embedded curves
+    reparamEmbedCreaseCurves(creatingFace, nodes, stl_vertices_xyz,
+                             stl_triangles);
+  }
   if(!quiet)
     Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
             "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "

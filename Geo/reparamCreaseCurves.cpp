@@ -1,0 +1,98 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <array>
+#include "GFace.h"
+#include "GModel.h"
+#include "GmshMessage.h"
+#include "MLine.h"
+#include "MPoint.h"
+#include "MVertex.h"
+#include "creaseChains.h"
+#include "discreteEdge.h"
+#include "discreteVertex.h"
+#include "reparamConePoints.h"
+#include "reparamCreaseCurves.h"
+
+namespace {
+
+  // The model point at p embedded in gf (a tip kept before), else a new
+  // one, with its mesh node
+  GVertex *pointAt(GFace *gf, const SPoint3 &p)
+  {
+    for(GVertex *v : gf->embeddedVertices())
+      if(v->x() == p.x() && v->y() == p.y() && v->z() == p.z()) return v;
+    GModel *m = gf->model();
+    for(auto it = m->firstVertex(); it != m->lastVertex(); ++it)
+      if((*it)->x() == p.x() && (*it)->y() == p.y() && (*it)->z() == p.z())
+        return *it;
+    discreteVertex *v = new discreteVertex(
+      m, m->getMaxElementaryNumber(0) + 1, p.x(), p.y(), p.z());
+    m->add(v);
+    MVertex *node = new MVertex(p.x(), p.y(), p.z(), v);
+    v->mesh_vertices.push_back(node);
+    v->points.push_back(new MPoint(node));
+    return v;
+  }
+
+  // A discrete curve along the chain's points, embedded in gf
+  bool embedChain(GFace *gf, const std::vector<SPoint3> &points,
+                  const std::vector<int> &chain)
+  {
+    GModel *m = gf->model();
+    GVertex *begin = pointAt(gf, points[chain.front()]);
+    GVertex *end = pointAt(gf, points[chain.back()]);
+    if(begin->mesh_vertices.empty() || end->mesh_vertices.empty()) return false;
+    discreteEdge *curve =
+      new discreteEdge(m, m->getMaxElementaryNumber(1) + 1, begin, end);
+    m->add(curve);
+    MVertex *previous = begin->mesh_vertices[0];
+    for(std::size_t i = 1; i < chain.size(); i++) {
+      MVertex *next = end->mesh_vertices[0];
+      if(i + 1 < chain.size()) {
+        const SPoint3 &p = points[chain[i]];
+        next = new MVertex(p.x(), p.y(), p.z(), curve);
+        curve->mesh_vertices.push_back(next);
+      }
+      curve->lines.push_back(new MLine(previous, next));
+      previous = next;
+    }
+    if(curve->createGeometry()) {
+      m->remove(curve);
+      delete curve;
+      return false;
+    }
+    gf->addEmbeddedEdge(curve);
+    return true;
+  }
+
+} // namespace
+
+int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
+                             const std::vector<SPoint3> &points,
+                             const std::vector<int> &triangleNodes)
+{
+  const double size = reparamLayoutNoiseSize();
+  if(size <= 0.) return 0;
+  std::vector<std::array<int, 3> > triangles(triangleNodes.size() / 3);
+  for(std::size_t t = 0; t < triangles.size(); t++)
+    for(int j = 0; j < 3; j++) triangles[t][j] = triangleNodes[3 * t + j];
+  std::vector<SPoint3> boundary;
+  for(std::size_t i = 0; i < points.size() && i < nodes.size(); i++) {
+    GEntity *on = nodes[i]->onWhat();
+    if(on && on->dim() < 2) boundary.push_back(points[i]);
+  }
+  const std::vector<std::vector<int> > chains = creaseChains(
+    points, triangles,
+    [&points](int a, int b) {
+      return reparamIsMergedCrease(points[a], points[b]);
+    },
+    boundary, 0.5 * size, 2. * size);
+  int added = 0;
+  for(const auto &chain : chains)
+    if(chain.front() != chain.back()) added += embedChain(gf, points, chain);
+  if(added)
+    Msg::Info("Reparam: surface %d: %d sharp crease%s inside it kept as "
+              "embedded curve%s",
+              gf->tag(), added, added > 1 ? "s" : "", added > 1 ? "s" : "");
+  return added;
+}

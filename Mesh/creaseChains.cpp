@@ -1,0 +1,103 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include "creaseChains.h"
+
+namespace {
+
+  typedef std::map<int, std::vector<int> > creaseGraph;
+
+  creaseGraph creaseEdges(const std::vector<std::array<int, 3> > &triangles,
+                          const std::function<bool(int, int)> &isCrease)
+  {
+    std::set<std::pair<int, int> > edges;
+    for(const auto &t : triangles)
+      for(int j = 0; j < 3; j++)
+        edges.insert(
+          {std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3])});
+    creaseGraph graph;
+    for(const auto &e : edges)
+      if(isCrease(e.first, e.second)) {
+        graph[e.first].push_back(e.second);
+        graph[e.second].push_back(e.first);
+      }
+    return graph;
+  }
+
+  // The chains between branch points and ends (closed loops of creases
+  // without either: from any of their nodes, back to it)
+  std::vector<std::vector<int> > walkChains(const creaseGraph &graph)
+  {
+    std::set<std::pair<int, int> > used;
+    auto take = [&used](int a, int b) {
+      return used.insert({std::min(a, b), std::max(a, b)}).second;
+    };
+    std::vector<std::vector<int> > chains;
+    auto walk = [&](int start, int next) {
+      std::vector<int> chain = {start};
+      int previous = start, node = next;
+      while(true) {
+        chain.push_back(node);
+        const std::vector<int> &around = graph.at(node);
+        if(around.size() != 2 || node == start) break;
+        const int following = around[0] == previous ? around[1] : around[0];
+        if(!take(node, following)) break;
+        previous = node;
+        node = following;
+      }
+      chains.push_back(chain);
+    };
+    for(int pass = 0; pass < 2; pass++)
+      for(const auto &n : graph) {
+        // ends and branch points first, then what is left (loops)
+        if(pass == 0 && n.second.size() == 2) continue;
+        for(int next : n.second)
+          if(take(n.first, next)) walk(n.first, next);
+      }
+    return chains;
+  }
+
+  double length(const std::vector<SPoint3> &points, const std::vector<int> &c)
+  {
+    double l = 0.;
+    for(std::size_t i = 0; i + 1 < c.size(); i++)
+      l += points[c[i]].distance(points[c[i + 1]]);
+    return l;
+  }
+
+} // namespace
+
+std::vector<std::vector<int> >
+creaseChains(const std::vector<SPoint3> &points,
+             const std::vector<std::array<int, 3> > &triangles,
+             const std::function<bool(int, int)> &isCrease,
+             const std::vector<SPoint3> &avoid, double margin,
+             double minLength)
+{
+  std::vector<std::vector<int> > kept;
+  const creaseGraph graph = creaseEdges(triangles, isCrease);
+  if(graph.empty()) return kept;
+  auto tooNear = [&](int n) {
+    for(const SPoint3 &p : avoid)
+      if(points[n].distance(p) < margin) return true;
+    return false;
+  };
+  for(std::vector<int> chain : walkChains(graph)) {
+    // the longest run of nodes far enough from the boundary
+    std::vector<int> best, run;
+    for(int n : chain) {
+      if(tooNear(n)) {
+        if(length(points, run) > length(points, best)) best = run;
+        run.clear();
+        continue;
+      }
+      run.push_back(n);
+    }
+    if(length(points, run) > length(points, best)) best = run;
+    if(best.size() >= 2 && length(points, best) >= minLength)
+      kept.push_back(best);
+  }
+  return kept;
+}

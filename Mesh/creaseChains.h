@@ -1,0 +1,29 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The sharp creases left inside a patch (a crease that ends inside its face
+// bounds no patch; one the noise merge took in) as chains of input nodes,
+// for the mesh to follow them as embedded curves instead of cutting across
+// (gmsh2x_car_body: a 45 degree crease along the sill, 1.6 % of the
+// diagonal from the mesh).
+
+#ifndef CREASE_CHAINS_H
+#define CREASE_CHAINS_H
+
+#include <array>
+#include <functional>
+#include <vector>
+#include "SPoint3.h"
+
+// The chains of crease edges (isCrease(a, b)) of the triangulation, cut at
+// their branch points (three creases or more), as node sequences; each
+// trimmed of its nodes closer than `margin` to an `avoid` point (the face's
+// boundary: an embedded curve must not touch it), then kept if its length
+// is at least `minLength`.
+std::vector<std::vector<int> >
+creaseChains(const std::vector<SPoint3> &points,
+             const std::vector<std::array<int, 3> > &triangles,
+             const std::function<bool(int, int)> &isCrease,
+             const std::vector<SPoint3> &avoid, double margin,
+             double minLength);
+
+#endif
