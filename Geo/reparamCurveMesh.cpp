@@ -49,6 +49,68 @@ void reparamRecordSmoothCuts(const std::vector<std::array<SPoint3, 2> > &edges)
   for(const auto &e : edges) smoothCuts().insert(byCoordinates(e[0], e[1]));
 }
 
+namespace {
+
+  // The input polyline of a discrete curve, whose parameter runs over its
+  // nodes (node i at i); false for another kind of curve
+  bool inputPolyline(GEdge *ge, std::vector<SPoint3> &polyline)
+  {
+    const Range<double> bounds = ge->parBounds(0);
+    const int last = (int)std::lround(bounds.high());
+    if(bounds.low() != 0. || last < 2 ||
+       std::fabs(bounds.high() - last) > 1e-12)
+      return false;
+    polyline.resize(last + 1);
+    for(int i = 0; i <= last; i++) {
+      GPoint p = ge->point(i);
+      polyline[i] = SPoint3(p.x(), p.y(), p.z());
+    }
+    return true;
+  }
+
+  // The nodes' parameters with the curve's ends, in increasing order; false
+  // if a node has none or they are not in order (then left alone)
+  bool nodeParameters(const std::vector<MVertex *> &nodes, double last,
+                      std::vector<double> &params)
+  {
+    params.assign(nodes.size() + 2, 0.);
+    params.back() = last;
+    for(std::size_t k = 0; k < nodes.size(); k++)
+      if(!nodes[k]->getParameter(0, params[k + 1])) return false;
+    for(std::size_t k = 0; k + 1 < params.size(); k++)
+      if(!(params[k] < params[k + 1])) return false;
+    return true;
+  }
+
+  pointByCoordinates byCoordinates(const SPoint3 &p)
+  {
+    return {{p.x(), p.y(), p.z()}};
+  }
+
+  // The same nodes moved to the new parameters, new ones made or the last
+  // ones dropped when a piece between corners got another count
+  void moveNodes(GEdge *ge, const std::vector<double> &snapped,
+                 std::vector<MVertex *> &nodes)
+  {
+    const std::size_t count = snapped.size() - 2;
+    for(std::size_t k = count; k < nodes.size(); k++) delete nodes[k];
+    const std::size_t kept = std::min(count, nodes.size());
+    nodes.resize(count, nullptr);
+    for(std::size_t k = 0; k < count; k++) {
+      const double t = snapped[k + 1];
+      GPoint p = ge->point(t);
+      if(k >= kept) {
+        // no size of its own (-1): Gmsh asks its size field when it needs
+        nodes[k] = new MEdgeVertex(p.x(), p.y(), p.z(), ge, t);
+        continue;
+      }
+      nodes[k]->setParameter(0, t);
+      nodes[k]->setXYZ(p.x(), p.y(), p.z());
+    }
+  }
+
+} // namespace
+
 void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
 {
   if(nodes.empty() || ge->geomType() != GEntity::DiscreteCurve ||
@@ -56,59 +118,29 @@ void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
        (int)compoundParametrization::gmsh ||
      !getReparamOptions().curveCorners)
     return;
-  // a discrete curve's parameter runs over its input nodes, node i at i
-  const Range<double> bounds = ge->parBounds(0);
-  const int last = (int)std::lround(bounds.high());
-  if(bounds.low() != 0. || last < 2 || std::fabs(bounds.high() - last) > 1e-12)
+  std::vector<SPoint3> polyline;
+  std::vector<double> params;
+  if(!inputPolyline(ge, polyline) || isSmoothCut(polyline) ||
+     !nodeParameters(nodes, polyline.size() - 1., params))
     return;
-  std::vector<SPoint3> polyline(last + 1);
-  for(int i = 0; i <= last; i++) {
-    GPoint p = ge->point(i);
-    polyline[i] = SPoint3(p.x(), p.y(), p.z());
-  }
-  if(isSmoothCut(polyline)) return;
-  std::vector<double> params(nodes.size() + 2);
-  params.front() = 0.;
-  params.back() = last;
-  for(std::size_t k = 0; k < nodes.size(); k++)
-    if(!nodes[k]->getParameter(0, params[k + 1])) return;
-  for(std::size_t k = 0; k + 1 < params.size(); k++)
-    if(!(params[k] < params[k + 1])) return; // not in order: leave it
-  // nor where a model vertex is, that another curve ends at (non-manifold
-  // input: a curve through the end of others)
+  // not on a model point, that another curve ends at (non-manifold input: a
+  // curve through the end of others), nor on another curve's corner
   std::set<pointByCoordinates> vertices;
   for(auto it = ge->model()->firstVertex(); it != ge->model()->lastVertex();
       ++it)
-    vertices.insert({{(*it)->x(), (*it)->y(), (*it)->z()}});
+    vertices.insert(byCoordinates((*it)->xyz()));
   auto allowed = [&](int i) {
-    const pointByCoordinates p = {{polyline[i].x(), polyline[i].y(),
-                                   polyline[i].z()}};
-    if(vertices.count(p)) return false;
+    const pointByCoordinates p = byCoordinates(polyline[i]);
     auto it = takenCorners().find(p);
-    return it == takenCorners().end() || it->second == ge;
+    return !vertices.count(p) &&
+           (it == takenCorners().end() || it->second == ge);
   };
   std::vector<int> corners;
   const std::vector<double> snapped =
     snapCurveNodesToCorners(polyline, params, allowed, &corners);
-  for(int i : corners)
-    takenCorners()[{{polyline[i].x(), polyline[i].y(), polyline[i].z()}}] = ge;
+  for(int i : corners) takenCorners()[byCoordinates(polyline[i])] = ge;
   if(snapped == params) return;
-  // the same nodes moved, new ones made or the last ones dropped when a
-  // piece between corners got another count
-  const std::size_t count = snapped.size() - 2;
-  for(std::size_t k = count; k < nodes.size(); k++) delete nodes[k];
-  const std::size_t kept = std::min(count, nodes.size());
-  nodes.resize(count, nullptr);
-  for(std::size_t k = 0; k < count; k++) {
-    const double t = snapped[k + 1];
-    GPoint p = ge->point(t);
-    if(k >= kept) {
-      nodes[k] = new MEdgeVertex(p.x(), p.y(), p.z(), ge, t);
-      continue;
-    }
-    nodes[k]->setParameter(0, t);
-    nodes[k]->setXYZ(p.x(), p.y(), p.z());
-  }
+  moveNodes(ge, snapped, nodes);
   Msg::Debug("Reparam: curve %d: nodes on the input's corners (%lu nodes, "
              "%lu before)",
              ge->tag(), nodes.size(), params.size() - 2);

@@ -132,6 +132,34 @@ namespace {
     return nodes;
   }
 
+  // gf's mesh: the stitched triangles, on new nodes for the input's inner
+  // nodes and on the curves' nodes for the others
+  void addTriangles(GFace *gf, const inputTriangulation &input,
+                    const stitchedTriangulation &stitched,
+                    const std::vector<MVertex *> &onCurves)
+  {
+    gf->deleteMesh();
+    const std::size_t numInput = input.points.size();
+    std::vector<MVertex *> nodes(numInput, nullptr);
+    for(const auto &t : stitched.triangles) {
+      MVertex *v[3];
+      for(int j = 0; j < 3; j++) {
+        const std::size_t n = t[j];
+        if(n >= numInput) {
+          v[j] = onCurves[n - numInput];
+          continue;
+        }
+        if(!nodes[n]) {
+          const SPoint3 &p = input.points[n];
+          nodes[n] = new MVertex(p.x(), p.y(), p.z(), gf);
+          gf->mesh_vertices.push_back(nodes[n]);
+        }
+        v[j] = nodes[n];
+      }
+      gf->triangles.push_back(new MTriangle(v[0], v[1], v[2]));
+    }
+  }
+
 } // namespace
 
 void reparamBeginFaceGeometry(GFace *gf)
@@ -188,27 +216,7 @@ bool reparamMeshFromInput(GFace *gf)
   stitchedTriangulation stitched = stitchToBoundaryNodes(
     input.points, input.triangles, boundaryPoints, tolerance, input.labels,
     boundaryLabels);
-
-  gf->deleteMesh();
-  const std::size_t numInput = input.points.size();
-  std::vector<MVertex *> nodes(numInput, nullptr);
-  for(const auto &t : stitched.triangles) {
-    MVertex *v[3];
-    for(int j = 0; j < 3; j++) {
-      const std::size_t n = t[j];
-      if(n >= numInput) {
-        v[j] = boundary[n - numInput];
-        continue;
-      }
-      if(!nodes[n]) {
-        const SPoint3 &p = input.points[n];
-        nodes[n] = new MVertex(p.x(), p.y(), p.z(), gf);
-        gf->mesh_vertices.push_back(nodes[n]);
-      }
-      v[j] = nodes[n];
-    }
-    gf->triangles.push_back(new MTriangle(v[0], v[1], v[2]));
-  }
+  addTriangles(gf, input, stitched, boundary);
   gf->meshStatistics.status = GFace::DONE;
   gf->meshStatistics.nbTriangle = gf->triangles.size();
   if(stitched.unplacedNodes || stitched.keptInputNodes)

@@ -238,6 +238,71 @@ namespace {
 
 } // namespace
 
+namespace {
+
+  // Every boundary node inserted on the input boundary edge it lies on,
+  // then the input nodes they coincide with replaced; returns how many found
+  // no edge within the tolerance
+  std::size_t insertBoundaryNodes(stitching &st, int numInput,
+                                  double tolerance,
+                                  const std::vector<int> &pointLabels,
+                                  const std::vector<std::vector<int> > &nodeLabels)
+  {
+    const std::size_t numNodes = st.points.size() - numInput;
+    std::vector<int> replacedBy(numInput, -1);
+    std::map<edgeKey, int> boundary = boundaryEdges(st);
+    // labels of the inserted nodes too: a later node may split their edges
+    std::vector<int> labelOf = pointLabels;
+    const bool labelled = (int)pointLabels.size() == numInput &&
+                          nodeLabels.size() == numNodes;
+    std::size_t unplaced = 0;
+    for(std::size_t k = 0; k < numNodes; k++) {
+      const labelling labels{labelOf, labelled ? &nodeLabels[k] : nullptr};
+      if(!insertBoundaryNode(st, boundary, numInput + (int)k, tolerance,
+                             labels, replacedBy))
+        unplaced++;
+      if(labelled)
+        labelOf.push_back(nodeLabels[k].empty() ? 0 : nodeLabels[k].front());
+    }
+    for(int n = 0; n < numInput; n++) {
+      if(replacedBy[n] < 0) continue;
+      for(int t : st.around(n)) {
+        for(int &m : st.triangles[t])
+          if(m == n) m = replacedBy[n];
+        st.nodeTriangles[replacedBy[n]].push_back(t);
+      }
+    }
+    return unplaced;
+  }
+
+  // The input nodes left on the boundary collapsed onto a neighbour along
+  // it, in passes until none can (each collapse removes a node: it ends);
+  // returns how many are left, `turned` the triangles turned
+  std::size_t collapseInputBoundary(stitching &st, int numInput,
+                                    std::size_t &turned)
+  {
+    std::set<int> pending;
+    for(const auto &e : boundaryEdges(st))
+      for(int n : e.first)
+        if(n < numInput) pending.insert(n);
+    for(bool progress = true; progress && !pending.empty();) {
+      progress = false;
+      for(auto it = pending.begin(); it != pending.end();) {
+        const int t = collapseOntoNeighbour(st, *it, numInput);
+        if(t < 0) {
+          ++it;
+          continue;
+        }
+        turned += t;
+        it = pending.erase(it);
+        progress = true;
+      }
+    }
+    return pending.size();
+  }
+
+} // namespace
+
 stitchedTriangulation
 stitchToBoundaryNodes(const std::vector<SPoint3> &points,
                       const std::vector<std::array<int, 3> > &triangles,
@@ -252,50 +317,10 @@ stitchToBoundaryNodes(const std::vector<SPoint3> &points,
   st.nodeTriangles.resize(st.points.size());
   for(const auto &t : triangles) st.addTriangle(t, st.normal(t));
   const int numInput = (int)points.size();
-
-  std::vector<int> replacedBy(numInput, -1);
-  std::map<edgeKey, int> boundary = boundaryEdges(st);
-  // labels of the inserted nodes too: a later node may split their edges
-  std::vector<int> labelOf = pointLabels;
-  const bool labelled =
-    pointLabels.size() == points.size() && nodeLabels.size() == boundaryNodes.size();
-  for(std::size_t k = 0; k < boundaryNodes.size(); k++) {
-    const labelling labels{labelOf, labelled ? &nodeLabels[k] : nullptr};
-    if(!insertBoundaryNode(st, boundary, numInput + (int)k, tolerance, labels,
-                           replacedBy))
-      result.unplacedNodes++;
-    if(labelled)
-      labelOf.push_back(nodeLabels[k].empty() ? 0 : nodeLabels[k].front());
-  }
-  for(int n = 0; n < numInput; n++) {
-    if(replacedBy[n] < 0) continue;
-    for(int t : st.around(n)) {
-      for(int &m : st.triangles[t])
-        if(m == n) m = replacedBy[n];
-      st.nodeTriangles[replacedBy[n]].push_back(t);
-    }
-  }
-
-  // The input nodes left on the boundary collapse onto a neighbour along
-  // it; passes until none can (each collapse removes a node: it ends)
-  std::set<int> pending;
-  for(const auto &e : boundaryEdges(st))
-    for(int n : e.first)
-      if(n < numInput) pending.insert(n);
-  for(bool progress = true; progress && !pending.empty();) {
-    progress = false;
-    for(auto it = pending.begin(); it != pending.end();) {
-      const int turned = collapseOntoNeighbour(st, *it, numInput);
-      if(turned < 0) {
-        ++it;
-        continue;
-      }
-      result.turnedTriangles += turned;
-      it = pending.erase(it);
-      progress = true;
-    }
-  }
-  result.keptInputNodes = pending.size();
+  result.unplacedNodes =
+    insertBoundaryNodes(st, numInput, tolerance, pointLabels, nodeLabels);
+  result.keptInputNodes =
+    collapseInputBoundary(st, numInput, result.turnedTriangles);
   for(std::size_t t = 0; t < st.triangles.size(); t++)
     if(st.alive[t]) result.triangles.push_back(st.triangles[t]);
   return result;
