@@ -76,7 +76,7 @@ TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
   // sharp edge) to near the boundary: the curve's ends and its 1D nodes
   std::vector<std::size_t> tags;
   std::vector<double> coords, params;
-  gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, true);
+  gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false);
   int onCrease = 0;
   for(std::size_t i = 0; i + 2 < coords.size(); i += 3)
     onCrease += std::fabs(coords[i] - 0.5) < 1e-12 && coords[i + 1] > 0.6 &&

@@ -1,8 +1,12 @@
 // Reparam - 1D nodes of a discrete curve moved onto the input's corners
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <gtest/gtest.h>
 #include "curveCornerSnap.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
 
 namespace {
 
@@ -92,4 +96,59 @@ TEST(curveCornerSnap, onlyCornersOf40DegreesOrMoreAttract)
   ASSERT_EQ(snapped.size(), expected.size());
   for(std::size_t k = 0; k < expected.size(); k++)
     EXPECT_NEAR(snapped[k], expected[k], 1e-9) << k;
+}
+
+namespace {
+
+  // The nodes of the current model's mesh at p (to 1e-12)
+  int meshNodesAt(const SPoint3 &p)
+  {
+    std::vector<std::size_t> tags;
+    std::vector<double> coords, params;
+    gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false);
+    int n = 0;
+    for(std::size_t i = 0; i + 2 < coords.size(); i += 3)
+      n += std::hypot(coords[i] - p.x(), coords[i + 1] - p.y(),
+                      coords[i + 2] - p.z()) < 1e-12;
+    return n;
+  }
+
+} // namespace
+
+TEST(curveCornerSnap, recipeMeshKeepsTheCornersOfAnLShapedPlate)
+{
+  // an L of the 20 x 20 grid of the unit square (its top right quarter
+  // removed): one closed boundary curve (the recipe does not split curves
+  // at corners), six corners, the reflex one at (0.5, 0.5). The size, 0.13,
+  // puts Gmsh's even nodes off most of them
+  testTriangulation grid = rectangleGrid(20, 20, 1., 1.);
+  testTriangulation plate;
+  std::map<int, int> index;
+  for(const auto &t : grid.triangles) {
+    SPoint3 g = (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) *
+                (1. / 3.);
+    if(g.x() > 0.5 && g.y() > 0.5) continue;
+    std::array<int, 3> kept;
+    for(int j = 0; j < 3; j++) {
+      auto it = index.insert({t[j], (int)plate.points.size()});
+      if(it.second) plate.points.push_back(grid.points[t[j]]);
+      kept[j] = it.first->second;
+    }
+    plate.triangles.push_back(kept);
+  }
+  const std::vector<SPoint3> corners = {
+    SPoint3(0, 0, 0),     SPoint3(1, 0, 0),   SPoint3(1, 0.5, 0),
+    SPoint3(0.5, 0.5, 0), SPoint3(0.5, 1, 0), SPoint3(0, 1, 0)};
+  remeshWithRecipe(plate, 0.13);
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  for(const SPoint3 &c : corners)
+    EXPECT_EQ(meshNodesAt(c), 1) << c.x() << " " << c.y();
+
+  // Gmsh's even spacing misses some
+  gmsh::option::setNumber("Mesh.CompoundCurveCorners", 0);
+  remeshWithRecipe(plate, 0.13);
+  gmsh::option::setNumber("Mesh.CompoundCurveCorners", 1);
+  int missed = 0;
+  for(const SPoint3 &c : corners) missed += meshNodesAt(c) == 0;
+  EXPECT_GT(missed, 0);
 }
