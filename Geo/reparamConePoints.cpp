@@ -8,6 +8,7 @@
 #include "GmshMessage.h"
 #include "MVertex.h"
 #include "conePoints.h"
+#include "creaseChains.h"
 #include "edgeByCoordinates.h"
 #include "discreteVertex.h"
 #include "reparamConePoints.h"

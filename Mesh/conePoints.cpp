@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 #include "SVector3.h"
 #include "conePoints.h"
 
@@ -42,27 +41,4 @@ std::vector<int> conePoints(const std::vector<SPoint3> &points,
     if(used[i] && !onBoundary[i] && angleSum[i] < maxAngleSum)
       tips.push_back((int)i);
   return tips;
-}
-
-std::vector<int>
-creaseCorners(const std::vector<SPoint3> &points,
-              const std::vector<std::array<int, 3> > &triangles,
-              const std::function<bool(int, int)> &isCrease)
-{
-  std::set<std::pair<int, int> > edges;
-  for(const auto &t : triangles)
-    for(int j = 0; j < 3; j++)
-      edges.insert(
-        {std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3])});
-  std::vector<int> creases(points.size(), 0);
-  for(const auto &e : edges)
-    if(isCrease(e.first, e.second)) {
-      creases[e.first]++;
-      creases[e.second]++;
-    }
-  // (not where two turn: a scan's creases zig-zag, armadillo got hundreds)
-  std::vector<int> corners;
-  for(std::size_t i = 0; i < points.size(); i++)
-    if(creases[i] >= 3) corners.push_back((int)i);
-  return corners;
 }

@@ -9,7 +9,6 @@
 #define CONE_POINTS_H
 
 #include <array>
-#include <functional>
 #include <vector>
 #include "SPoint3.h"
 
@@ -20,13 +19,5 @@
 std::vector<int> conePoints(const std::vector<SPoint3> &points,
                             const std::vector<std::array<int, 3> > &triangles,
                             double maxAngleSum);
-
-// The nodes where three crease edges or more meet (isCrease(a, b) says
-// whether the edge of nodes a and b is one): a spike of a scan whose sharp
-// edges the patch layout merged into a patch as noise
-std::vector<int>
-creaseCorners(const std::vector<SPoint3> &points,
-              const std::vector<std::array<int, 3> > &triangles,
-              const std::function<bool(int, int)> &isCrease);
 
 #endif

@@ -69,6 +69,19 @@ namespace {
 
 } // namespace
 
+std::vector<int>
+creaseCorners(const std::vector<SPoint3> &points,
+              const std::vector<std::array<int, 3> > &triangles,
+              const std::function<bool(int, int)> &isCrease)
+{
+  // (not where two turn: a scan's creases zig-zag, armadillo got hundreds)
+  std::vector<int> corners;
+  for(const auto &n : creaseEdges(triangles, isCrease))
+    if(n.second.size() >= 3 && n.first < (int)points.size())
+      corners.push_back(n.first);
+  return corners;
+}
+
 std::vector<std::vector<int> >
 creaseChains(const std::vector<SPoint3> &points,
              const std::vector<std::array<int, 3> > &triangles,

@@ -14,6 +14,14 @@
 #include <vector>
 #include "SPoint3.h"
 
+// The nodes where three crease edges or more meet (isCrease(a, b) says
+// whether the edge of nodes a and b is one): a spike of a scan whose sharp
+// edges the patch layout merged into a patch as noise
+std::vector<int>
+creaseCorners(const std::vector<SPoint3> &points,
+              const std::vector<std::array<int, 3> > &triangles,
+              const std::function<bool(int, int)> &isCrease);
+
 // The chains of crease edges (isCrease(a, b)) of the triangulation, cut at
 // their branch points (three creases or more), as node sequences; each
 // trimmed of its nodes closer than `margin` to an `avoid` point (the face's

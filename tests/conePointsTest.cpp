@@ -4,6 +4,7 @@
 #include <set>
 #include <gtest/gtest.h>
 #include "conePoints.h"
+#include "creaseChains.h"
 #include "edgeByCoordinates.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
