@@ -275,16 +275,38 @@ namespace {
     return unplaced;
   }
 
-  // The input nodes left on the boundary collapsed onto a neighbour along
-  // it, in passes until none can (each collapse removes a node: it ends);
-  // returns how many are left, `turned` the triangles turned
+  // The input nodes left on the boundary loops with curve nodes collapsed
+  // onto a neighbour along them, in passes until none can (each collapse
+  // removes a node: it ends); returns how many are left, `turned` the
+  // triangles turned
   std::size_t collapseInputBoundary(stitching &st, int numInput,
                                     std::size_t &turned)
   {
-    std::set<int> pending;
-    for(const auto &e : boundaryEdges(st))
-      for(int n : e.first)
+    // only on the boundary loops a curve node went to: a loop no curve
+    // runs along (a surface given without curves) stays as it is
+    std::map<int, std::vector<int> > along;
+    for(const auto &e : boundaryEdges(st)) {
+      along[e.first[0]].push_back(e.first[1]);
+      along[e.first[1]].push_back(e.first[0]);
+    }
+    std::set<int> pending, seen;
+    for(const auto &start : along) {
+      if(seen.count(start.first)) continue;
+      std::vector<int> loop, stack = {start.first};
+      seen.insert(start.first);
+      bool stitched = false;
+      while(!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        loop.push_back(n);
+        stitched = stitched || n >= numInput;
+        for(int m : along[n])
+          if(seen.insert(m).second) stack.push_back(m);
+      }
+      if(!stitched) continue;
+      for(int n : loop)
         if(n < numInput) pending.insert(n);
+    }
     for(bool progress = true; progress && !pending.empty();) {
       progress = false;
       for(auto it = pending.begin(); it != pending.end();) {

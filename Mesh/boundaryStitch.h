@@ -27,8 +27,9 @@ struct stitchedTriangulation {
 
 // Each boundary node is inserted on the input's boundary edge it lies on
 // (within `tolerance`, absolute), taking the place of an input node it
-// coincides with; then every other input node of the boundary is collapsed
-// onto a boundary neighbour, the one that turns no triangle if it can.
+// coincides with; then every other input node of the boundary loops that
+// got boundary nodes is collapsed onto a boundary neighbour, the one that
+// turns no triangle if it can (a loop without any is left as it is).
 // Labels, when given, say which curve or corner each point is on, so that
 // boundary edges of different curves lying on each other (a degenerate
 // triangle's) are told apart: a node goes to an edge whose both ends carry

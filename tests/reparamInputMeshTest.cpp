@@ -129,3 +129,19 @@ TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
   EXPECT_EQ(nonManifold, 0u);
   EXPECT_EQ(inside, 0);
 }
+
+TEST(boundaryStitch, loopsWithoutBoundaryNodesStayAsTheyAre)
+{
+  // the 4 x 4 grid with no curve node at all: its input is kept whole; with
+  // nodes on its corners only, its boundary nodes give way
+  const testTriangulation grid = rectangleGrid(4, 4, 1., 1.);
+  stitchedTriangulation st =
+    stitchToBoundaryNodes(grid.points, grid.triangles, {}, 1e-9);
+  EXPECT_EQ(st.triangles, grid.triangles);
+  EXPECT_EQ(st.keptInputNodes, 0u);
+  st = stitchToBoundaryNodes(grid.points, grid.triangles,
+                             {SPoint3(0, 0, 0), SPoint3(1, 0, 0),
+                              SPoint3(1, 1, 0), SPoint3(0, 1, 0)},
+                             1e-9);
+  EXPECT_LT(st.triangles.size(), grid.triangles.size());
+}
