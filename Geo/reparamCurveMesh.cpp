@@ -19,10 +19,24 @@ namespace {
   // curves through the same input node (non-manifold input) must not both
   // put a node there
   typedef std::array<double, 3> pointByCoordinates;
-  std::map<pointByCoordinates, const GEdge *> &takenCorners()
+  struct cornerOwner {
+    const GModel *model;
+    int tag;
+    const GEdge *curve;
+  };
+  std::map<pointByCoordinates, cornerOwner> &takenCorners()
   {
-    static std::map<pointByCoordinates, const GEdge *> corners;
+    static std::map<pointByCoordinates, cornerOwner> corners;
     return corners;
+  }
+
+  // Whether another curve of ge's model holds the corner (a curve of a
+  // model gone, or gone from it, holds none)
+  bool takenByAnother(const cornerOwner &owner, GEdge *ge)
+  {
+    GModel *m = ge->model();
+    return owner.curve != ge && owner.model == m &&
+           m->getEdgeByTag(owner.tag) == owner.curve;
   }
 
   std::set<edgeByCoordinates> &smoothCuts()
@@ -45,6 +59,8 @@ namespace {
 
 void reparamRecordSmoothCuts(const std::vector<std::array<SPoint3, 2> > &edges)
 {
+  // a new layout: new curves, whose meshes take their corners anew
+  takenCorners().clear();
   smoothCuts().clear();
   for(const auto &e : edges) smoothCuts().insert(byCoordinates(e[0], e[1]));
 }
@@ -133,12 +149,13 @@ void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
     const pointByCoordinates p = byCoordinates(polyline[i]);
     auto it = takenCorners().find(p);
     return !vertices.count(p) &&
-           (it == takenCorners().end() || it->second == ge);
+           (it == takenCorners().end() || !takenByAnother(it->second, ge));
   };
   std::vector<int> corners;
   const std::vector<double> snapped =
     snapCurveNodesToCorners(polyline, params, allowed, &corners);
-  for(int i : corners) takenCorners()[byCoordinates(polyline[i])] = ge;
+  for(int i : corners)
+    takenCorners()[byCoordinates(polyline[i])] = {ge->model(), ge->tag(), ge};
   if(snapped == params) return;
   moveNodes(ge, snapped, nodes);
   Msg::Debug("Reparam: curve %d: nodes on the input's corners (%lu nodes, "

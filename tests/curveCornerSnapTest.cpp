@@ -151,4 +151,12 @@ TEST(curveCornerSnap, recipeMeshKeepsTheCornersOfAnLShapedPlate)
   int missed = 0;
   for(const SPoint3 &c : corners) missed += meshNodesAt(c) == 0;
   EXPECT_GT(missed, 0);
+
+  // a new model of the same plate (its curves other objects at the same
+  // places) keeps them all again: what a curve took in a model gone is no
+  // claim on them
+  remeshWithRecipe(plate, 0.13);
+  remeshWithRecipe(plate, 0.13);
+  for(const SPoint3 &c : corners)
+    EXPECT_EQ(meshNodesAt(c), 1) << c.x() << " " << c.y();
 }
