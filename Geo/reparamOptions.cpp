@@ -73,6 +73,11 @@ double opt_mesh_compound_curve_corners(OPT_ARGS_NUM)
   return onOffOption(getReparamOptions().curveCorners, action, val);
 }
 
+double opt_mesh_compound_optimize(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().optimize, action, val);
+}
+
 double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
 {
   reparamOptions &o = getReparamOptions();

@@ -38,6 +38,9 @@ struct reparamOptions {
   // Mesh.CompoundCurveCorners: nodes of discrete curves on the input's
   // corners
   bool curveCorners = true;
+  // Mesh.CompoundOptimize: flips and node moves on the input surface around
+  // the poor triangles of each new face mesh
+  bool optimize = true;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none

@@ -1,0 +1,20 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The new mesh of a discrete face optimized on its input triangulation
+// (Mesh.CompoundOptimize; hook in discreteFace::mesh, patches/0001, after
+// the planar mesher and before the face's report): Mesh/surfaceMeshOptimizer
+// on the face's triangles, its curves' nodes and edges (boundary and
+// embedded) kept, and each moved node given the (u, v) of the input point it
+// lies on, so that the face's parametric interface still maps it there.
+
+#ifndef REPARAM_OPTIMIZE_FACE_H
+#define REPARAM_OPTIMIZE_FACE_H
+
+class GFace;
+
+// Optimizes the triangles of discrete face gf if Reparam parametrized it,
+// Mesh.CompoundOptimize is on and its mesh has no quadrangle; logs what it
+// did. False (nothing done) otherwise
+bool reparamOptimizeMeshedFace(GFace *gf);
+
+#endif

@@ -1,0 +1,358 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <cmath>
+#include "closestTriangle.h"
+#include "farInputNodes.h"
+#include "longEdgeSplit.h"
+#include "meshFidelity.h"
+#include "surfaceMeshOptimizer.h"
+#include "triangleQuality.h"
+
+namespace {
+
+  // A kept change must raise the worst kappa by this much: no cycles, no
+  // work for rounding
+  const double minimalGain = 1e-2;
+
+  SPoint3 centroidOf(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c)
+  {
+    return SPoint3((a.x() + b.x() + c.x()) / 3., (a.y() + b.y() + c.y()) / 3.,
+                   (a.z() + b.z() + c.z()) / 3.);
+  }
+
+  double longestEdge(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c)
+  {
+    return std::max(a.distance(b), std::max(b.distance(c), c.distance(a)));
+  }
+
+  class optimizer {
+  public:
+    optimizer(optimizableMesh &m, const surfaceMesh &input,
+              const closestTriangleSearch &onInput,
+              const meshOptimizationOptions &o)
+      : _m(m), _input(input), _onInput(onInput), _o(o),
+        _around(m.points.size())
+    {
+      for(std::size_t t = 0; t < m.triangles.size(); t++)
+        for(int v : m.triangles[t]) _around[v].push_back((int)t);
+      _m.landing.resize(m.points.size(), -1);
+      _m.inputNode.resize(m.points.size(), -1);
+      _m.movable.resize(m.points.size(), false);
+      _dirty.assign(m.points.size(), true);
+    }
+
+    double kappa(int t) const
+    {
+      const std::array<int, 3> &c = _m.triangles[t];
+      return triangleKappa(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]);
+    }
+
+    std::vector<int> trianglesBelowTarget() const
+    {
+      std::vector<std::pair<double, int> > below;
+      for(std::size_t t = 0; t < _m.triangles.size(); t++) {
+        // against the input first, then worst first
+        const double k = _m.against[t] ? -1. : kappa((int)t);
+        if(k < _o.target) below.push_back(std::make_pair(k, (int)t));
+      }
+      std::sort(below.begin(), below.end()); // worst first
+      std::vector<int> list;
+      for(const auto &b : below) list.push_back(b.second);
+      return list;
+    }
+
+    bool tryFlips(int t);
+    bool tryMove(int v);
+
+  private:
+    optimizableMesh &_m;
+    const surfaceMesh &_input;
+    const closestTriangleSearch &_onInput;
+    const meshOptimizationOptions _o;
+    std::vector<std::vector<int> > _around; // triangles around each point
+    // points whose surroundings changed since a move of them was refused
+    std::vector<bool> _dirty;
+    void changedAround(int v)
+    {
+      for(int t : _around[v])
+        for(int w : _m.triangles[t]) _dirty[w] = true;
+    }
+
+    bool against(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c) const
+    {
+      return triangleAgainstInput(a, b, c, _input, _onInput) != _o.reversed;
+    }
+    double distanceToInput(const SPoint3 &p) const
+    {
+      return _onInput.closest(p).distance;
+    }
+    // The triangle other than t on edge (a, b), -1 if none or several
+    int neighbourAcross(int t, int a, int b) const;
+    bool tryFlip(int t, int k);
+    void replaceCorner(int t, int from, int to);
+    std::pair<double, double> ringKappa(int v, const SPoint3 &at) const;
+    double ringFarthest(int v, const SPoint3 &at, bool &valid) const;
+  };
+
+  int optimizer::neighbourAcross(int t, int a, int b) const
+  {
+    int found = -1;
+    for(int s : _around[a]) {
+      if(s == t) continue;
+      const std::array<int, 3> &c = _m.triangles[s];
+      if(std::find(c.begin(), c.end(), b) == c.end()) continue;
+      if(found >= 0) return -1; // non-manifold edge: leave it
+      found = s;
+    }
+    return found;
+  }
+
+  void optimizer::replaceCorner(int t, int from, int to)
+  {
+    for(int &v : _m.triangles[t])
+      if(v == from) v = to;
+    std::vector<int> &old = _around[from];
+    old.erase(std::remove(old.begin(), old.end(), t), old.end());
+    _around[to].push_back(t);
+  }
+
+  // Edge k of t (corners k, k + 1) flipped if both new triangles are better
+  bool optimizer::tryFlip(int t, int k)
+  {
+    const int a = _m.triangles[t][k], b = _m.triangles[t][(k + 1) % 3];
+    const int p = _m.triangles[t][(k + 2) % 3];
+    if(_m.lockedEdges.count(std::make_pair(std::min(a, b), std::max(a, b))))
+      return false;
+    const int s = neighbourAcross(t, a, b);
+    if(s < 0) return false;
+    int q = -1;
+    for(int v : _m.triangles[s])
+      if(v != a && v != b) q = v;
+    // s must run b -> a (consistent orientation), and pq must be new
+    const std::array<int, 3> &cs = _m.triangles[s];
+    int ib = 0;
+    while(cs[ib] != b) ib++;
+    if(q < 0 || q == p || cs[(ib + 1) % 3] != a) return false;
+    for(int r : _around[p]) {
+      const std::array<int, 3> &c = _m.triangles[r];
+      if(std::find(c.begin(), c.end(), q) != c.end()) return false;
+    }
+    const std::vector<SPoint3> &x = _m.points;
+    // a triangle against the input counts as worse than any along it: the
+    // flip that turns it back is better (signed quality)
+    const double before =
+      _m.against[t] || _m.against[s] ? -1. : std::min(kappa(t), kappa(s));
+    // (a, b, p) and (b, a, q) become (a, q, p) and (q, b, p)
+    const double after = std::min(triangleKappa(x[a], x[q], x[p]),
+                                  triangleKappa(x[q], x[b], x[p]));
+    if(after < before + minimalGain) return false;
+    if(against(x[a], x[q], x[p]) || against(x[q], x[b], x[p])) return false;
+    const double wasFar = std::max(
+      distanceToInput(centroidOf(x[a], x[b], x[p])),
+      std::max(distanceToInput(centroidOf(x[b], x[a], x[q])),
+               distanceToInput((x[a] + x[b]) * 0.5)));
+    const double far = std::max(
+      distanceToInput(centroidOf(x[a], x[q], x[p])),
+      std::max(distanceToInput(centroidOf(x[q], x[b], x[p])),
+               distanceToInput((x[p] + x[q]) * 0.5)));
+    if(far > wasFar + _o.tolerance * x[p].distance(x[q])) return false;
+    replaceCorner(t, b, q); // (a, b, p) -> (a, q, p)
+    replaceCorner(s, a, p); // (b, a, q) -> (b, p, q) = (q, b, p)
+    _m.against[t] = _m.against[s] = false;
+    for(int v : {a, b, p, q}) _dirty[v] = true;
+    return true;
+  }
+
+  bool optimizer::tryFlips(int t)
+  {
+    for(int k = 0; k < 3; k++)
+      if(tryFlip(t, k)) return true;
+    return false;
+  }
+
+  // The corners of triangle t with v at `at`
+  void cornersWith(const std::array<int, 3> &t, int v, const SPoint3 &at,
+                   const std::vector<SPoint3> &points, SPoint3 c[3])
+  {
+    for(int k = 0; k < 3; k++) c[k] = t[k] == v ? at : points[t[k]];
+  }
+
+  // The worst and the mean kappa of the triangles around v with v at `at`
+  std::pair<double, double> optimizer::ringKappa(int v, const SPoint3 &at) const
+  {
+    double worst = 1., sum = 0.;
+    for(int t : _around[v]) {
+      SPoint3 c[3];
+      cornersWith(_m.triangles[t], v, at, _m.points, c);
+      const double k = triangleKappa(c[0], c[1], c[2]);
+      worst = std::min(worst, k);
+      sum += k;
+    }
+    return std::make_pair(worst, sum / _around[v].size());
+  }
+
+  // The largest distance of the centroids of the triangles around v (v at
+  // `at`) to the input, less the tolerance times their longest edge;
+  // `valid`: none of them points against the input
+  double optimizer::ringFarthest(int v, const SPoint3 &at, bool &valid) const
+  {
+    double farthest = 0.;
+    valid = true;
+    for(int t : _around[v]) {
+      SPoint3 c[3];
+      cornersWith(_m.triangles[t], v, at, _m.points, c);
+      if(against(c[0], c[1], c[2])) valid = false;
+      farthest = std::max(farthest,
+                          distanceToInput(centroidOf(c[0], c[1], c[2])) -
+                            _o.tolerance * longestEdge(c[0], c[1], c[2]));
+    }
+    return farthest;
+  }
+
+  // v moved to its neighbours' centroid or halfway there, on the input, if
+  // the triangles around it get better (the searches on the input only for
+  // positions that would be better)
+  bool optimizer::tryMove(int v)
+  {
+    if(!_m.movable[v] || _around[v].empty() || !_dirty[v]) return false;
+    _dirty[v] = false; // until something around it changes
+    SPoint3 centroid(0., 0., 0.);
+    std::set<int> neighbours;
+    for(int t : _around[v])
+      for(int w : _m.triangles[t])
+        if(w != v) neighbours.insert(w);
+    for(int w : neighbours) centroid += _m.points[w];
+    centroid *= 1. / neighbours.size();
+    const SPoint3 here = _m.points[v];
+    // better: the worst triangle around v better, or as good and the mean
+    // better (the worst may be held by nodes that do not move)
+    std::pair<double, double> before = ringKappa(v, here);
+    // a triangle against the input counts as worse than any along it: the
+    // move that turns it back is better (signed quality)
+    for(int t : _around[v])
+      if(_m.against[t]) before.first = -1.;
+    std::vector<std::pair<double, closestTriangleHit> > better;
+    for(double step : {1., 0.5}) {
+      const closestTriangleHit hit =
+        _onInput.closest(here + (centroid - here) * step);
+      if(hit.triangle < 0) continue;
+      const std::pair<double, double> after = ringKappa(v, hit.point);
+      if(after.first >= before.first + minimalGain ||
+         (after.first >= before.first &&
+          after.second >= before.second + minimalGain))
+        better.push_back(std::make_pair(after.first + after.second, hit));
+    }
+    if(better.empty()) return false;
+    std::sort(better.begin(), better.end(),
+              [](const std::pair<double, closestTriangleHit> &a,
+                 const std::pair<double, closestTriangleHit> &b) {
+                return a.first > b.first;
+              });
+    bool valid;
+    const double farthestHere = std::max(ringFarthest(v, here, valid), 0.);
+    for(const auto &b : better) {
+      const double farthest = ringFarthest(v, b.second.point, valid);
+      if(!valid || farthest > farthestHere) continue;
+      _m.points[v] = b.second.point;
+      _m.landing[v] = b.second.triangle;
+      for(int t : _around[v]) _m.against[t] = false;
+      changedAround(v);
+      return true;
+    }
+    return false;
+  }
+
+} // namespace
+
+double worstKappa(const optimizableMesh &m)
+{
+  double worst = 1.;
+  for(const std::array<int, 3> &t : m.triangles)
+    worst = std::min(worst, triangleKappa(m.points[t[0]], m.points[t[1]],
+                                          m.points[t[2]]));
+  return worst;
+}
+
+namespace {
+
+  // Flips and moves around the triangles below the target or against the
+  // input, pass after pass
+  void improvePoorTriangles(optimizableMesh &m, const surfaceMesh &input,
+                            const closestTriangleSearch &onInput,
+                            const meshOptimizationOptions &o,
+                            meshOptimizationResult &r)
+  {
+    optimizer opt(m, input, onInput, o);
+    std::vector<int> below = opt.trianglesBelowTarget();
+    for(int pass = 0; !below.empty() && pass < o.maxPasses; pass++) {
+      r.passes++;
+      std::size_t changes = 0;
+      for(int t : below)
+        if((m.against[t] || opt.kappa(t) < o.target) && opt.tryFlips(t))
+          changes++;
+      r.flips += changes;
+      std::set<int> corners;
+      for(int t : opt.trianglesBelowTarget())
+        for(int v : m.triangles[t]) corners.insert(v);
+      for(int v : corners)
+        if(opt.tryMove(v)) {
+          r.moves++;
+          changes++;
+        }
+      below = opt.trianglesBelowTarget();
+      if(!changes) break;
+    }
+  }
+
+  // Triangles of m below the target, and pointing against the input
+  void countPoorTriangles(const optimizableMesh &m,
+                          const meshOptimizationOptions &o,
+                          std::size_t &below, std::size_t &against)
+  {
+    below = against = 0;
+    for(std::size_t t = 0; t < m.triangles.size(); t++) {
+      const std::array<int, 3> &c = m.triangles[t];
+      below +=
+        triangleKappa(m.points[c[0]], m.points[c[1]], m.points[c[2]]) <
+        o.target;
+      against += m.against[t];
+    }
+  }
+
+} // namespace
+
+meshOptimizationResult optimizeOnInput(optimizableMesh &m,
+                                       const surfaceMesh &input,
+                                       const closestTriangleSearch &onInput,
+                                       const meshOptimizationOptions &o)
+{
+  meshOptimizationResult r;
+  m.landing.resize(m.points.size(), -1);
+  m.inputNode.resize(m.points.size(), -1);
+  m.movable.resize(m.points.size(), false);
+  m.against.resize(m.triangles.size());
+  for(std::size_t t = 0; t < m.triangles.size(); t++) {
+    const std::array<int, 3> &c = m.triangles[t];
+    m.against[t] = triangleAgainstInput(m.points[c[0]], m.points[c[1]],
+                                        m.points[c[2]], input, onInput) !=
+                   o.reversed;
+  }
+  r.minBefore = worstKappa(m);
+  countPoorTriangles(m, o, r.belowBefore, r.againstBefore);
+  for(int round = 0; round < std::max(1, o.maxInsertionRounds); round++) {
+    const std::size_t inserted =
+      o.insertAbove > 0. ?
+        insertFarInputNodes(m, input, onInput, o.reversed, o.insertAbove) :
+        0;
+    const std::size_t splits =
+      splitLongEdges(m, input, onInput, o.reversed, o.splitAbove);
+    r.inserted += inserted;
+    r.splits += splits;
+    improvePoorTriangles(m, input, onInput, o, r);
+    if(!inserted && !splits) break;
+  }
+  r.minAfter = worstKappa(m);
+  countPoorTriangles(m, o, r.belowAfter, r.againstAfter);
+  return r;
+}

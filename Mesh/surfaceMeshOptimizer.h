@@ -1,0 +1,89 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Local optimization of a new surface mesh on the input triangulation it was
+// made from: edge flips and node moves around the triangles of poor shape.
+// The planar mesher makes triangles good in the (u, v) plane's metric, but a
+// triangle larger than the input's spans places where the map's Jacobian
+// changes (its corners' images are not where a uniform stretch puts them),
+// and thin folds and strips give slivers in 3D: on the shared scans most
+// triangles below kappa 0.3 have no edge on a curve. Every node moved lands
+// on the input (its closest point), and a change is kept only if it raises
+// the worst kappa of the triangles it touches, leaves none of them pointing
+// against the input, and takes none of them farther from the input than
+// they were (beyond a small share of their size).
+
+#ifndef SURFACE_MESH_OPTIMIZER_H
+#define SURFACE_MESH_OPTIMIZER_H
+
+#include <array>
+#include <cstddef>
+#include <set>
+#include <utility>
+#include <vector>
+#include "SPoint3.h"
+
+class closestTriangleSearch;
+struct surfaceMesh;
+
+// A triangle mesh to optimize, with what must stay
+struct optimizableMesh {
+  std::vector<SPoint3> points;
+  std::vector<std::array<int, 3> > triangles; // consistently oriented
+  std::vector<bool> movable; // per point: an inner node, free to move
+  std::set<std::pair<int, int> > lockedEdges; // (i < j): never flipped
+  // per point, set by the optimizer: the input triangle a moved or new
+  // point lies on (-1: not moved), and the input node a new point was
+  // inserted at (-1: none)
+  std::vector<int> landing, inputNode;
+  // per triangle, set by the optimizer: whether it points against the input
+  // (each change leaves none of its new triangles so)
+  std::vector<bool> against;
+  // per point, the mesh size asked there (empty: no edge is split); a new
+  // point gets the mean of the corners of the triangle it splits
+  std::vector<double> size;
+};
+
+struct meshOptimizationOptions {
+  // triangles below this kappa get their edges and inner corners tried
+  double target = 0.6;
+  int maxPasses = 4;
+  // how much farther from the input a change may take a triangle, as a share
+  // of its longest edge (a flip across a crease of the input cuts it off)
+  double tolerance = 0.02;
+  // the mesh's triangles turn against the input's (most of them do)
+  bool reversed = false;
+  // inner input nodes farther from the mesh than this share of the edges
+  // around are inserted (a crease or tip the mesh cuts off; 0: none)
+  double insertAbove = 0.25;
+  // inner edges longer than this times the size at their ends are split
+  // (Mesh/longEdgeSplit.h)
+  double splitAbove = 1.6;
+  int maxInsertionRounds = 3;
+};
+
+struct meshOptimizationResult {
+  double minBefore = 1., minAfter = 1.; // kappa
+  std::size_t belowBefore = 0, belowAfter = 0; // triangles below the target
+  std::size_t againstBefore = 0, againstAfter = 0; // triangles
+  std::size_t flips = 0, moves = 0, passes = 0;
+  std::size_t inserted = 0; // input nodes
+  std::size_t splits = 0; // long edges
+};
+
+// Optimizes m in place against the input triangulation `input` (searched by
+// onInput, built on it): inserts the inner input nodes the mesh cuts off
+// (Mesh/farInputNodes.h) and splits the long edges (Mesh/longEdgeSplit.h),
+// then flips edges not locked and moves movable
+// nodes to their neighbours' centroid (or halfway), projected on the input,
+// around the triangles below the target or pointing against the input
+// (which count as worse than any triangle along it), pass after pass until
+// a pass keeps no change; then again while nodes are added
+meshOptimizationResult optimizeOnInput(optimizableMesh &m,
+                                       const surfaceMesh &input,
+                                       const closestTriangleSearch &onInput,
+                                       const meshOptimizationOptions &o = {});
+
+// The worst kappa of m's triangles (1 without triangles)
+double worstKappa(const optimizableMesh &m);
+
+#endif

@@ -1,0 +1,124 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <array>
+#include "SVector3.h"
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+#include "surfaceMeshOptimizer.h"
+#include "triangleSplit.h"
+
+void triangleBarycentric(const SPoint3 &p, const SPoint3 &a, const SPoint3 &b,
+                         const SPoint3 &c, double l[3])
+{
+  const SVector3 e1(a, b), e2(a, c), ep(a, p);
+  const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
+  const double det = g11 * g22 - g12 * g12;
+  l[0] = l[1] = l[2] = 0.;
+  if(!(det > 1e-14 * g11 * g22)) return;
+  l[1] = (g22 * dot(ep, e1) - g12 * dot(ep, e2)) / det;
+  l[2] = (g11 * dot(ep, e2) - g12 * dot(ep, e1)) / det;
+  l[0] = 1. - l[1] - l[2];
+}
+
+namespace {
+  std::pair<int, int> edgeKey(int a, int b)
+  {
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  }
+} // namespace
+
+triangleSplitter::triangleSplitter(optimizableMesh &m,
+                                   const surfaceMesh &input,
+                                   const closestTriangleSearch &onInput,
+                                   bool reversed)
+  : _m(m), _input(input), _onInput(onInput), _reversed(reversed)
+{
+  for(std::size_t t = 0; t < m.triangles.size(); t++)
+    for(int k = 0; k < 3; k++)
+      _edges[edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3])]
+        .push_back((int)t);
+  _touched.assign(m.triangles.size(), false);
+}
+
+const std::vector<int> &triangleSplitter::edgeTriangles(int a, int b)
+{
+  return _edges[edgeKey(a, b)];
+}
+
+bool triangleSplitter::against(const std::array<int, 3> &t,
+                               const SPoint3 &x) const
+{
+  SPoint3 c[3];
+  for(int k = 0; k < 3; k++)
+    c[k] = t[k] < (int)_m.points.size() ? _m.points[t[k]] : x;
+  return triangleAgainstInput(c[0], c[1], c[2], _input, _onInput) != _reversed;
+}
+
+// Replaces the triangles `out` by `in` (node index points.size() is the new
+// node x) if none of `in` points against the input
+bool triangleSplitter::apply(const std::vector<int> &out,
+                             const std::vector<std::array<int, 3> > &in,
+                             const SPoint3 &x, bool movable, int inputNode)
+{
+  for(const std::array<int, 3> &t : in)
+    if(against(t, x)) return false;
+  // the triangles around `out` (untouched until now, so the edge map still
+  // holds their edges) wait for the next round
+  for(int t : out)
+    for(int k = 0; k < 3; k++)
+      for(int s : edgeTriangles(_m.triangles[t][k],
+                                _m.triangles[t][(k + 1) % 3]))
+        _touched[s] = true;
+  _m.points.push_back(x);
+  _m.movable.push_back(movable);
+  _m.landing.push_back(_onInput.closest(x).triangle);
+  _m.inputNode.push_back(inputNode);
+  if(_m.size.size() + 1 == _m.points.size()) {
+    const std::array<int, 3> &c = _m.triangles[out[0]];
+    _m.size.push_back((_m.size[c[0]] + _m.size[c[1]] + _m.size[c[2]]) / 3.);
+  }
+  const bool trackAgainst = _m.against.size() == _m.triangles.size();
+  for(std::size_t i = 0; i < in.size(); i++) {
+    if(i < out.size())
+      _m.triangles[out[i]] = in[i];
+    else {
+      _m.triangles.push_back(in[i]);
+      _touched.push_back(true);
+      if(trackAgainst) _m.against.push_back(false);
+    }
+    if(trackAgainst && i < out.size()) _m.against[out[i]] = false;
+  }
+  return true;
+}
+
+bool triangleSplitter::splitTriangle(int t, const SPoint3 &x, bool movable,
+                                     int inputNode)
+{
+  if(_touched[t]) return false;
+  const std::array<int, 3> c = _m.triangles[t];
+  const int n = (int)_m.points.size();
+  return apply({t}, {{{c[0], c[1], n}}, {{c[1], c[2], n}}, {{c[2], c[0], n}}},
+               x, movable, inputNode);
+}
+
+bool triangleSplitter::splitEdge(int t, int k, const SPoint3 &x, bool movable,
+                                 int inputNode)
+{
+  if(_touched[t]) return false;
+  const std::array<int, 3> c = _m.triangles[t];
+  const int a = c[k], b = c[(k + 1) % 3], p = c[(k + 2) % 3];
+  if(_m.lockedEdges.count(edgeKey(a, b))) return false;
+  const std::vector<int> &on = edgeTriangles(a, b);
+  if(on.size() != 2) return false; // a boundary (or non-manifold) edge
+  const int s = on[0] == t ? on[1] : on[0];
+  if(_touched[s]) return false;
+  int q = -1;
+  for(int v : _m.triangles[s])
+    if(v != a && v != b) q = v;
+  if(q < 0) return false;
+  const int n = (int)_m.points.size();
+  // (a, b, p) and (b, a, q) become (a, n, p), (n, b, p), (b, n, q), (n, a, q)
+  return apply({t, s}, {{{a, n, p}}, {{n, b, p}}, {{b, n, q}}, {{n, a, q}}},
+               x, movable, inputNode);
+}

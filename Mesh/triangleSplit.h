@@ -1,0 +1,56 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Nodes added to a surface mesh being optimized (Mesh/surfaceMeshOptimizer):
+// a point inserted into a triangle (split in three) or onto an inner edge
+// (split with both its triangles), refused where a new triangle would point
+// against the input. Within one round of insertions a triangle changes at
+// most once, and its neighbours wait for the next round, so that the edges
+// found at the start of the round stay true.
+
+#ifndef TRIANGLE_SPLIT_H
+#define TRIANGLE_SPLIT_H
+
+#include <map>
+#include <utility>
+#include <vector>
+#include "SPoint3.h"
+
+class closestTriangleSearch;
+struct optimizableMesh;
+struct surfaceMesh;
+
+class triangleSplitter {
+public:
+  // reversed: m's triangles turn against the input's
+  triangleSplitter(optimizableMesh &m, const surfaceMesh &input,
+                   const closestTriangleSearch &onInput, bool reversed);
+  // x, a point of the input (input node `inputNode`, or -1), inserted into
+  // triangle t; false if refused
+  bool splitTriangle(int t, const SPoint3 &x, bool movable, int inputNode);
+  // x inserted onto edge k of triangle t (corners k, k + 1), which must be
+  // an inner edge, not locked
+  bool splitEdge(int t, int k, const SPoint3 &x, bool movable, int inputNode);
+  // whether t may still change this round
+  bool untouched(int t) const { return !_touched[t]; }
+  // the triangles on edge (a, b) at the start of the round
+  const std::vector<int> &edgeTriangles(int a, int b);
+
+private:
+  optimizableMesh &_m;
+  const surfaceMesh &_input;
+  const closestTriangleSearch &_onInput;
+  const bool _reversed;
+  std::map<std::pair<int, int>, std::vector<int> > _edges;
+  std::vector<bool> _touched;
+  bool against(const std::array<int, 3> &t, const SPoint3 &x) const;
+  bool apply(const std::vector<int> &out,
+             const std::vector<std::array<int, 3> > &in, const SPoint3 &x,
+             bool movable, int inputNode);
+};
+
+// Barycentric coordinates of the point of triangle (a, b, c) closest to p
+// (zero for a degenerate triangle)
+void triangleBarycentric(const SPoint3 &p, const SPoint3 &a, const SPoint3 &b,
+                         const SPoint3 &c, double l[3]);
+
+#endif

@@ -1,0 +1,247 @@
+// Reparam - optimization of a new mesh on its input triangulation: flips and
+// node moves raise the worst kappa and keep nodes on the input, curves and
+// locked edges stay, input nodes the mesh cuts off are inserted, long edges
+// split
+
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include "closestTriangle.h"
+#include "farInputNodes.h"
+#include "longEdgeSplit.h"
+#include "meshFidelity.h"
+#include "surfaceMeshOptimizer.h"
+#include "testPatches.h"
+#include "triangleQuality.h"
+
+namespace {
+
+  surfaceMesh asSurfaceMesh(const testTriangulation &t)
+  {
+    surfaceMesh m;
+    m.points = t.points;
+    m.triangles = t.triangles;
+    return m;
+  }
+
+  // t to optimize: nodes off the border movable
+  optimizableMesh optimizable(const testTriangulation &t)
+  {
+    optimizableMesh m;
+    m.points = t.points;
+    m.triangles = t.triangles;
+    m.movable.assign(t.points.size(), true);
+    std::map<std::pair<int, int>, int> uses;
+    for(const auto &tri : t.triangles)
+      for(int k = 0; k < 3; k++)
+        uses[std::make_pair(std::min(tri[k], tri[(k + 1) % 3]),
+                            std::max(tri[k], tri[(k + 1) % 3]))]++;
+    for(const auto &e : uses)
+      if(e.second == 1) m.movable[e.first.first] = m.movable[e.first.second] =
+          false;
+    return m;
+  }
+
+  double largestDistance(const optimizableMesh &m,
+                         const closestTriangleSearch &onInput)
+  {
+    double d = 0.;
+    for(const SPoint3 &p : m.points) d = std::max(d, onInput.closest(p).distance);
+    return d;
+  }
+
+  std::size_t againstCount(const optimizableMesh &m, const surfaceMesh &input,
+                           const closestTriangleSearch &onInput)
+  {
+    std::size_t n = 0;
+    for(const auto &t : m.triangles)
+      n += triangleAgainstInput(m.points[t[0]], m.points[t[1]],
+                                m.points[t[2]], input, onInput);
+    return n;
+  }
+
+  // Each node of t lifted onto z = 0.3 sin(2 x) cos(y) (a smooth bump)
+  testTriangulation bump(testTriangulation t)
+  {
+    for(SPoint3 &p : t.points)
+      p = SPoint3(p.x(), p.y(), 0.3 * std::sin(2. * p.x()) * std::cos(p.y()));
+    return t;
+  }
+
+} // namespace
+
+TEST(surfaceMeshOptimizer, slivers)
+{
+  // An 8 x 8 grid lifted on a bump, three of its inner nodes pushed to 2 %
+  // of a cell from a neighbour (slivers and needles around each); the input
+  // is a fine triangulation of the same bump. The optimizer must get rid of
+  // them and leave every node on the input, every triangle along it
+  const testTriangulation input = bump(rectangleGrid(60, 60, 1., 1.));
+  const surfaceMesh in = asSurfaceMesh(input);
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  testTriangulation grid = rectangleGrid(8, 8, 1., 1.);
+  const double h = 1. / 8.;
+  for(int node : {2 * 9 + 2, 3 * 9 + 5, 6 * 9 + 3}) {
+    SPoint3 &p = grid.points[node];
+    p = SPoint3(p.x() - 0.98 * h, p.y(), 0.);
+  }
+  optimizableMesh m = optimizable(bump(grid));
+  // on the input's triangles, not only on the bump
+  for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+  const std::vector<SPoint3> before = m.points;
+  const double worstBefore = worstKappa(m);
+  ASSERT_LT(worstBefore, 0.05);
+  meshOptimizationOptions o;
+  o.insertAbove = 0.; // the mesh's nodes are on the input already
+  const meshOptimizationResult r = optimizeOnInput(m, in, onInput, o);
+  EXPECT_NEAR(r.minBefore, worstBefore, 1e-12);
+  EXPECT_GT(r.minAfter, 0.5);
+  EXPECT_NEAR(worstKappa(m), r.minAfter, 1e-12);
+  EXPECT_GT(r.moves, 0u);
+  EXPECT_EQ(r.belowAfter, 0u);
+  EXPECT_GE(r.belowBefore, 6u);
+  EXPECT_LT(largestDistance(m, onInput), 1e-9);
+  EXPECT_EQ(againstCount(m, in, onInput), 0u);
+  for(std::size_t i = 0; i < m.points.size(); i++) {
+    if(!m.movable[i]) EXPECT_EQ(m.points[i].distance(before[i]), 0.);
+    if(m.landing[i] >= 0) {
+      // the landing triangle holds the node
+      const auto &t = in.triangles[m.landing[i]];
+      const SPoint3 c = closestPointOnTriangle(
+        m.points[i], in.points[t[0]], in.points[t[1]], in.points[t[2]]);
+      EXPECT_LT(c.distance(m.points[i]), 1e-9);
+    }
+  }
+}
+
+TEST(surfaceMeshOptimizer, neverLowersTheWorstKappaNorLeavesTheInput)
+{
+  // Jittered grids of several seeds on the bump: whatever the start, the
+  // worst kappa does not drop, nodes stay on the input, no triangle turns
+  for(unsigned seed = 1; seed <= 6; seed++) {
+    const testTriangulation input = bump(rectangleGrid(50, 50, 1., 1.));
+    const surfaceMesh in = asSurfaceMesh(input);
+    const closestTriangleSearch onInput(in.points, in.triangles);
+    optimizableMesh m = optimizable(bump(jitteredGrid(10, 0.95, seed)));
+    // the jittered nodes are on the bump, not on its triangulation: project
+    for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+    const double before = worstKappa(m);
+    meshOptimizationOptions o;
+    o.insertAbove = 0.;
+    const meshOptimizationResult r = optimizeOnInput(m, in, onInput, o);
+    EXPECT_GE(r.minAfter, before) << "seed " << seed;
+    EXPECT_LT(largestDistance(m, onInput), 1e-9) << "seed " << seed;
+    EXPECT_EQ(againstCount(m, in, onInput), 0u) << "seed " << seed;
+    EXPECT_EQ(m.triangles.size(), 200u); // no node added
+  }
+}
+
+TEST(surfaceMeshOptimizer, lockedEdgesAreNotFlipped)
+{
+  // Two triangles over a quad whose diagonal makes a sliver: flipped when
+  // free, kept when locked
+  optimizableMesh m;
+  m.points = {SPoint3(0., 0., 0.), SPoint3(1., 0.45, 0.), SPoint3(0., 1., 0.),
+              SPoint3(-0.02, 0.5, 0.)};
+  // diagonal 0-2 with node 3 almost on it: (0, 1, 2) and (2, 3, 0)
+  m.triangles = {{{0, 1, 2}}, {{2, 3, 0}}};
+  m.movable.assign(4, false);
+  optimizableMesh locked = m;
+  locked.lockedEdges.insert(std::make_pair(0, 2));
+  meshOptimizationOptions o;
+  o.insertAbove = 0.;
+  // node 3 lies outside the unit square's input: put the input under it
+  const testTriangulation wide = rectangleGrid(10, 10, 2., 2.);
+  testTriangulation shifted = wide;
+  for(SPoint3 &p : shifted.points) p = SPoint3(p.x() - 1., p.y() - 0.5, 0.);
+  const surfaceMesh under = asSurfaceMesh(shifted);
+  const closestTriangleSearch onUnder(under.points, under.triangles);
+  const meshOptimizationResult free = optimizeOnInput(m, under, onUnder, o);
+  EXPECT_EQ(free.flips, 1u);
+  EXPECT_GT(free.minAfter, free.minBefore);
+  const meshOptimizationResult kept = optimizeOnInput(locked, under, onUnder, o);
+  EXPECT_EQ(kept.flips, 0u);
+  EXPECT_EQ(locked.triangles[0], (std::array<int, 3>{{0, 1, 2}}));
+}
+
+TEST(surfaceMeshOptimizer, inputNodesTheMeshCutsOffAreInserted)
+{
+  // The input: a roof, two planes meeting at a ridge along x = 0.5 (77
+  // degrees between their normals: a sharp crease the layout merged into a
+  // patch); the mesh: a coarse grid whose nodes miss the ridge (7 cells),
+  // so its triangles cut across it
+  auto roof = [](testTriangulation t) {
+    for(SPoint3 &p : t.points)
+      p = SPoint3(p.x(), p.y(), 0.8 * (0.5 - std::fabs(p.x() - 0.5)));
+    return t;
+  };
+  const testTriangulation input = roof(rectangleGrid(40, 40, 1., 1.));
+  const surfaceMesh in = asSurfaceMesh(input);
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  optimizableMesh m = optimizable(roof(rectangleGrid(7, 7, 1., 1.)));
+  const std::size_t nodes = m.points.size();
+  // the largest and mean distance of the ridge's input nodes to the mesh
+  auto cutOff = [&](const optimizableMesh &mesh, double &mean) {
+    const closestTriangleSearch onMesh(mesh.points, mesh.triangles);
+    double largest = 0., sum = 0.;
+    int count = 0;
+    for(const SPoint3 &p : in.points)
+      if(std::fabs(p.x() - 0.5) < 1e-9 && p.y() > 0.1 && p.y() < 0.9) {
+        const double d = onMesh.closest(p).distance;
+        largest = std::max(largest, d);
+        sum += d;
+        count++;
+      }
+    mean = sum / count;
+    return largest;
+  };
+  double meanBefore, meanAfter;
+  const double before = cutOff(m, meanBefore);
+  ASSERT_GT(before, 0.05); // 0.057: the ridge is 0.4 high, the chord 0.343
+  const meshOptimizationResult r = optimizeOnInput(m, in, onInput);
+  const double after = cutOff(m, meanAfter);
+  // at most one node per triangle and its neighbours per round, 3 rounds
+  EXPECT_GE(r.inserted, 6u);
+  EXPECT_LE(after, before);
+  EXPECT_LT(meanAfter, 0.5 * meanBefore); // 0.057 -> 0.019
+  EXPECT_EQ(m.points.size(), nodes + r.inserted + r.splits);
+  for(std::size_t i = nodes; i < m.points.size(); i++)
+    if(m.inputNode[i] >= 0) {
+      EXPECT_FALSE(m.movable[i]); // it marks the ridge
+      EXPECT_EQ(m.points[i].distance(in.points[m.inputNode[i]]), 0.);
+    }
+  EXPECT_EQ(againstCount(m, in, onInput), 0u);
+  EXPECT_GE(r.minAfter, 0.5); // the flips around the new nodes
+}
+
+TEST(surfaceMeshOptimizer, longEdgesAreSplitOnTheInput)
+{
+  // A 4 x 4 grid of the bump asked at a size of a third of its cells: the
+  // inner edges longer than 1.6 times the size are split, at points of the
+  // input, in rounds until none is left or nothing can be split
+  const testTriangulation input = bump(rectangleGrid(60, 60, 1., 1.));
+  const surfaceMesh in = asSurfaceMesh(input);
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  optimizableMesh m = optimizable(bump(rectangleGrid(4, 4, 1., 1.)));
+  m.size.assign(m.points.size(), 0.25 / 3.);
+  m.landing.assign(m.points.size(), -1);
+  m.inputNode.assign(m.points.size(), -1);
+  const std::size_t nodes = m.points.size();
+  const std::size_t first = splitLongEdges(m, in, onInput, false, 1.6);
+  // inner edges of the 4 x 4 grid: 33 - 16 on the border; one per triangle
+  // and neighbours per round
+  EXPECT_GT(first, 2u);
+  EXPECT_LE(first, 17u);
+  EXPECT_EQ(m.points.size(), nodes + first);
+  EXPECT_EQ(m.size.size(), m.points.size());
+  for(std::size_t i = nodes; i < m.points.size(); i++) {
+    EXPECT_TRUE(m.movable[i]);
+    EXPECT_LT(onInput.closest(m.points[i]).distance, 1e-9);
+    EXPECT_NEAR(m.size[i], 0.25 / 3., 1e-12);
+  }
+  EXPECT_EQ(m.triangles.size(), 32u + 2 * first);
+  EXPECT_EQ(againstCount(m, in, onInput), 0u);
+  // no sizes: nothing split
+  optimizableMesh unsized = optimizable(bump(rectangleGrid(4, 4, 1., 1.)));
+  EXPECT_EQ(splitLongEdges(unsized, in, onInput, false, 1.6), 0u);
+}
