@@ -9,6 +9,7 @@
 #include "invertedElementRepair.h"
 #include "meshFidelity.h"
 #include "reparamMeshValidity.h"
+#include "reparamOptimizeFace.h"
 #include "reparamReport.h"
 
 std::size_t countElementsAgainstFaceNormals(GFace *gf)
@@ -71,6 +72,14 @@ bool reparamKeepPlanarMesh(GFace *gf)
   // normals at the nodes (Gmsh's test): kept. MeshAdapt would only cross
   // the same thin folds, slower (a 33-element face of gmsh2x_skull: 1
   // element failed Gmsh's test, none the report's; MeshAdapt left 1)
+  // Mesh.CompoundOptimize turns back the triangles against the input with
+  // the others it optimizes (Geo/reparamOptimizeFace.cpp): when none is
+  // left, the mesh is kept without a second search of the input under
+  // every triangle
+  if(reparamOptimizeMeshedFace(gf)) {
+    const optimizationRecord *o = findOptimization(gf);
+    if(o && !o->againstAfter) return true;
+  }
   if(!repairInvertedTriangles(gf)) return true;
   const std::size_t against = countElementsAgainstFaceNormals(gf);
   if(!against) return true;

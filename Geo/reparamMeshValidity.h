@@ -21,8 +21,9 @@ class GFace;
 std::size_t countElementsAgainstFaceNormals(GFace *gf);
 
 // For a discrete face Reparam parametrized (else false, and Gmsh's test
-// decides): first splits the edges of the triangles pointing against the
-// input (Mesh/invertedElementRepair), then true if none is left, or if at
+// decides): first optimizes it (Mesh.CompoundOptimize, which turns back the
+// triangles pointing against the input), then splits the edges of those
+// left (Mesh/invertedElementRepair), then true if none is left, or if at
 // most 1 % of the elements fail Gmsh's test: the mesh is kept (logged)
 bool reparamKeepPlanarMesh(GFace *gf);
 

@@ -135,11 +135,12 @@ namespace {
 
 bool reparamOptimizeMeshedFace(GFace *gf)
 {
-  const parametrizationRecord *record = findParametrization(gf);
-  if(!getReparamOptions().optimize || !record || record->map <= 0 ||
+  const parametrizationRecord *map = findParametrization(gf);
+  if(!getReparamOptions().optimize || !map || map->map <= 0 ||
      gf->geomType() != GEntity::DiscreteSurface || gf->triangles.empty() ||
      !gf->quadrangles.empty() || gf->stl_triangles.empty() ||
-     gf->stl_vertices_uv.size() != gf->stl_vertices_xyz.size())
+     gf->stl_vertices_uv.size() != gf->stl_vertices_xyz.size() ||
+     findOptimization(gf))
     return false;
   const double t0 = TimeOfDay();
   std::vector<MVertex *> nodes;
@@ -150,6 +151,20 @@ bool reparamOptimizeMeshedFace(GFace *gf)
   o.reversed = reversedOnInput(m, input, onInput);
   const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);
   if(r.flips || r.moves || r.inserted || r.splits) writeBack(gf, m, nodes);
+  optimizationRecord done;
+  done.done = true;
+  done.kappaMinBefore = r.minBefore;
+  done.seconds = TimeOfDay() - t0;
+  done.inserted = r.inserted;
+  done.splits = r.splits;
+  done.flips = r.flips;
+  done.moves = r.moves;
+  done.againstBefore = r.againstBefore;
+  done.againstAfter = r.againstAfter;
+  done.reversed = o.reversed;
+  done.elements = gf->getNumMeshElements();
+  done.firstElement = gf->getMeshElement(0);
+  recordOptimization(gf, done);
   if(!r.belowBefore && !r.againstBefore && !r.inserted && !r.splits)
     return true;
   Msg::Info("Reparam: surface %d: optimized on the input: kappa min %.3g -> "

@@ -13,8 +13,11 @@
 class GFace;
 
 // Optimizes the triangles of discrete face gf if Reparam parametrized it,
-// Mesh.CompoundOptimize is on and its mesh has no quadrangle; logs what it
-// did. False (nothing done) otherwise
+// Mesh.CompoundOptimize is on, its mesh has no quadrangle and is not the
+// one it left already (the validity hook, Geo/reparamMeshValidity.h, runs
+// it first on Delaunay and Frontal-Delaunay meshes); logs what it did and
+// records it for the report (findOptimization). False (nothing done)
+// otherwise
 bool reparamOptimizeMeshedFace(GFace *gf);
 
 #endif

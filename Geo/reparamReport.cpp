@@ -28,6 +28,18 @@ namespace {
     return r;
   }
 
+  std::mutex &reportsMutex()
+  {
+    static std::mutex m;
+    return m;
+  }
+
+  std::map<const GFace *, optimizationRecord> &optimizations()
+  {
+    static std::map<const GFace *, optimizationRecord> r;
+    return r;
+  }
+
   bool sameMesh(const faceReport &r, const GFace *gf)
   {
     return r.face == gf && gf->getNumMeshElements() == r.elements &&
@@ -78,10 +90,32 @@ faceReport *findFaceReport(const GFace *gf)
   return nullptr;
 }
 
+void recordOptimization(const GFace *gf, const optimizationRecord &record)
+{
+  std::lock_guard<std::mutex> lock(reportsMutex());
+  optimizations()[gf] = record;
+}
+
+const optimizationRecord *findOptimization(const GFace *gf)
+{
+  std::lock_guard<std::mutex> lock(reportsMutex());
+  auto it = optimizations().find(gf);
+  if(it == optimizations().end()) return nullptr;
+  // kept until the face is meshed again: the mesh it left must be there
+  GFace *f = const_cast<GFace *>(gf);
+  const optimizationRecord &r = it->second;
+  if(!r.elements || f->getNumMeshElements() != r.elements ||
+     f->getMeshElement(0) != r.firstElement)
+    return nullptr;
+  return &r;
+}
+
 void reparamReportMeshedFace(GFace *gf, double seconds)
 {
   if(!getReparamOptions().report) return;
   faceReport r;
+  const optimizationRecord *optimization = findOptimization(gf);
+  if(optimization) r.optimization = *optimization;
   r.tag = gf->tag();
   const parametrizationRecord *p = findParametrization(gf);
   if(p) {
@@ -102,12 +136,21 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
     // the orientation vote reuses these searches (Geo/reparamOrient.cpp)
     r.hasInput = true;
     for(const SPoint3 &x : gf->stl_vertices_xyz) r.inputBox += x;
-    r.fidelity = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
+    // the optimizer knows which triangles point against the input: not
+    // searched again
+    std::size_t inverted = 0;
+    if(optimization && gf->quadrangles.empty())
+      inverted = optimization->reversed ?
+                   gf->triangles.size() - optimization->againstAfter :
+                   optimization->againstAfter;
+    r.fidelity = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf),
+                                optimization && gf->quadrangles.empty() ?
+                                  &inverted :
+                                  nullptr);
   }
   // a face meshed twice before the report: keep the last mesh; faces may be
   // meshed in parallel (OpenMP builds)
-  static std::mutex reportsMutex;
-  std::lock_guard<std::mutex> lock(reportsMutex);
+  std::lock_guard<std::mutex> lock(reportsMutex());
   std::vector<faceReport> &reports = pendingFaceReports();
   reports.erase(
     std::remove_if(reports.begin(), reports.end(),
@@ -197,6 +240,8 @@ void reparamReportMeshedModel(GModel *m)
   if(!reports.empty())
     for(const std::string &line : reportTable(reports, whole.get()))
       Msg::Info("Reparam: %s", line.c_str());
+  const std::string optimization = optimizationLine(reports);
+  if(!optimization.empty()) Msg::Info("Reparam: %s", optimization.c_str());
   const std::string farthest = farthestPointLine(reports, whole.get());
   if(!farthest.empty()) Msg::Info("Reparam: %s", farthest.c_str());
   const std::string &file = getReparamOptions().reportFile;

@@ -44,12 +44,30 @@ const parametrizationRecord *findParametrization(const GFace *gf);
 const parametrizationRecord *
 findParametrization(const std::vector<SPoint2> &uv);
 
+// What Mesh.CompoundOptimize did to a face's new mesh
+struct optimizationRecord {
+  bool done = false;
+  double kappaMinBefore = 1., seconds = 0.;
+  std::size_t inserted = 0, splits = 0, flips = 0, moves = 0;
+  std::size_t againstBefore = 0, againstAfter = 0;
+  bool reversed = false; // the mesh turns against the input (most of it)
+  // the mesh it left, to tell whether it is still gf's
+  std::size_t elements = 0;
+  const MElement *firstElement = nullptr;
+};
+
+// Records the optimization of gf's new mesh, for its report and benches
+void recordOptimization(const GFace *gf, const optimizationRecord &record);
+// The record of the optimization of gf's current mesh, or null
+const optimizationRecord *findOptimization(const GFace *gf);
+
 // One line of the report
 struct faceReport {
   int tag = 0;
   bool reparametrized = false; // by Reparam (else Gmsh's own map)
   parametrizationRecord parametrization;
-  double meshTime = 0.;
+  double meshTime = 0.; // planar mesher and optimization
+  optimizationRecord optimization;
   faceQuality quality;
   bool hasInput = false; // fidelity measured against an input triangulation
   meshFidelity fidelity; // inverted: against the final orientation
@@ -79,6 +97,10 @@ void reparamReportMeshedModel(GModel *m);
 // The discrete faces of m without a parametrization nor a mesh (their
 // CreateGeometry failed): holes in the mesh, named by the report
 std::vector<int> unparametrizedFaces(GModel *m);
+
+// The report's line on Mesh.CompoundOptimize (empty if it did nothing):
+// "optimization on the input: kappa min A -> B, ..."
+std::string optimizationLine(const std::vector<faceReport> &reports);
 
 // The table lines and the JSON text of `reports` (for the hook and tests);
 // the JSON lists `unmeshed` faces and the faces meshed with their input

@@ -53,6 +53,20 @@ namespace {
       t.parametrization.checkTime += p.checkTime;
       t.parametrization.fallbackTime += p.fallbackTime;
       t.meshTime += r.meshTime;
+      const optimizationRecord &o = r.optimization;
+      if(o.done) {
+        t.optimization.kappaMinBefore = t.optimization.done ?
+          std::min(t.optimization.kappaMinBefore, o.kappaMinBefore) :
+          o.kappaMinBefore;
+        t.optimization.done = true;
+        t.optimization.seconds += o.seconds;
+        t.optimization.inserted += o.inserted;
+        t.optimization.splits += o.splits;
+        t.optimization.flips += o.flips;
+        t.optimization.moves += o.moves;
+        t.optimization.againstBefore += o.againstBefore;
+        t.optimization.againstAfter += o.againstAfter;
+      }
       const faceQuality &q = r.quality;
       if(q.triangles) {
         t.quality.kappaMin = firstTriangles ?
@@ -186,6 +200,18 @@ namespace {
     }
     s += ", \"inverted\": " +
          (r.hasInput ? std::to_string(r.fidelity.inverted) : "null");
+    const optimizationRecord &o = r.optimization;
+    if(o.done)
+      s += ", \"optimization\": {\"kappaMinBefore\": " +
+           number(o.kappaMinBefore) + ", \"seconds\": " + number(o.seconds) +
+           ", \"insertedInputNodes\": " + std::to_string(o.inserted) +
+           ", \"longEdgeSplits\": " + std::to_string(o.splits) +
+           ", \"flips\": " + std::to_string(o.flips) +
+           ", \"moves\": " + std::to_string(o.moves) +
+           ", \"againstInputBefore\": " + std::to_string(o.againstBefore) +
+           ", \"againstInputAfter\": " + std::to_string(o.againstAfter) + "}";
+    else
+      s += ", \"optimization\": null";
     return s;
   }
 
@@ -211,6 +237,22 @@ std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
   snprintf(surfaces, sizeof(surfaces), "%lu surf.", reports.size());
   lines.push_back(tableLine("total", surfaces, total(reports, whole)));
   return lines;
+}
+
+std::string optimizationLine(const std::vector<faceReport> &reports)
+{
+  const faceReport t = total(reports, nullptr);
+  const optimizationRecord &o = t.optimization;
+  if(!o.done) return "";
+  char line[320];
+  snprintf(line, sizeof(line),
+           "optimization on the input (Mesh.CompoundOptimize): kappa min "
+           "%.3g -> %.3g, %lu input nodes the mesh cut off inserted, %lu long "
+           "edges split, %lu flips, %lu node moves, %lu -> %lu triangles "
+           "against the input, in %g s",
+           o.kappaMinBefore, t.quality.kappaMin, o.inserted, o.splits, o.flips,
+           o.moves, o.againstBefore, o.againstAfter, o.seconds);
+  return line;
 }
 
 std::string farthestPointLine(const std::vector<faceReport> &reports,

@@ -203,7 +203,8 @@ meshFidelity compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
   return f;
 }
 
-meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output)
+meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output,
+                            const std::size_t *knownInverted)
 {
   meshFidelity f;
   f.elements = output.numElements();
@@ -213,7 +214,9 @@ meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output)
   if(input.triangles.empty() || !f.elements) return f;
 
   closestTriangleSearch onInput(input.points, input.triangles);
-  oneSided there = distances(output, input, onInput, &f.inverted);
+  oneSided there =
+    distances(output, input, onInput, knownInverted ? nullptr : &f.inverted);
+  if(knownInverted) f.inverted = *knownInverted;
   // the output as triangles for the search from the input side
   std::vector<std::array<int, 3> > outputTriangles = output.triangles;
   for(const auto &q : output.quadrangles) {

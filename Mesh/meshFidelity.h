@@ -46,8 +46,10 @@ struct meshFidelity {
   bool farthestOnInput = false;
 };
 
+// (knownInverted: meshFidelity::inverted as already counted, not searched)
 meshFidelity compareToInput(const surfaceMesh &input,
-                            const surfaceMesh &output);
+                            const surfaceMesh &output,
+                            const std::size_t *knownInverted = nullptr);
 
 // Only the two-sided distances (no inverted count) of several meshed faces
 // against their inputs taken together: the whole model's Hausdorff

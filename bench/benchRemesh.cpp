@@ -12,6 +12,7 @@
 //   remesh map M algorithm A geometry S mesh S faces F meshed K triangles T
 //   quadrangles Q inverted I hausdorff H mean D kappaMin K kappaMean K
 //   below03 P etaMin E etaMean E tau T fidelity S fallbacks B
+//   optimizedFaces O kappaMinBeforeOptimization K optimization S
 //
 // geometry: CreateGeometry (the parametrizations), mesh: Mesh 2; faces: the
 // discrete faces (those whose parametrization failed too), meshed: those
@@ -21,7 +22,9 @@
 // and element-weighted mean two-sided distance of a face to its input, in %
 // of the input's bounding-box diagonal; kappa over all triangles, eta over
 // all quadrangles, tau (%) over all edges; fallbacks: faces where the map
-// (3 to 5) was not one-to-one and the mean value map took over.
+// (3 to 5) was not one-to-one and the mean value map took over;
+// optimizedFaces: faces Mesh.CompoundOptimize ran on, the worst kappa
+// before it and its seconds (within mesh).
 
 #include <algorithm>
 #include <cstdio>
@@ -80,6 +83,8 @@ int main(int argc, char **argv)
   SBoundingBox3d box;
   std::vector<GFace *> meshedFaces;
   std::size_t faces = 0, meshed = 0, inverted = 0, fallbacks = 0;
+  std::size_t optimized = 0;
+  double kappaMinBeforeOptimization = 1., optimization = 0.;
   double hausdorff = 0., weightedMean = 0.;
   std::size_t weight = 0;
   for(auto it = GModel::current()->firstFace();
@@ -94,6 +99,12 @@ int main(int argc, char **argv)
     if(gf->triangles.empty() && gf->quadrangles.empty()) continue;
     meshed++;
     meshedFaces.push_back(gf);
+    if(const optimizationRecord *o = findOptimization(gf)) {
+      optimized++;
+      kappaMinBeforeOptimization =
+        std::min(kappaMinBeforeOptimization, o->kappaMinBefore);
+      optimization += o->seconds;
+    }
     meshFidelity f =
       compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
     inverted += f.inverted;
@@ -114,12 +125,15 @@ int main(int argc, char **argv)
               "meshed %lu triangles %lu quadrangles %lu inverted %lu "
               "hausdorff %.4g mean %.4g kappaMin %.4f kappaMean %.4f below03 "
               "%.4f etaMin %.4f etaMean %.4f tau %.2f fidelity %.3f "
-              "fallbacks %lu\n",
+              "fallbacks %lu optimizedFaces %lu kappaMinBeforeOptimization "
+              "%.4f optimization %.3f\n",
               map, algorithm, geometry, mesh, faces, meshed, q.triangles,
               q.quadrangles, inverted, 100. * hausdorff / diagonal,
               weight ? 100. * weightedMean / weight / diagonal : 0., q.kappaMin,
               q.kappaMean, q.kappaShareBelow03, q.etaMin, q.etaMean, q.tau,
-              fidelity, fallbacks);
+              fidelity, fallbacks, optimized,
+              optimized ? kappaMinBeforeOptimization : q.kappaMin,
+              optimization);
   gmsh::finalize();
   return 0;
 }

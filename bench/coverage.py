@@ -232,6 +232,8 @@ def read_report(path):
             "hausdorff": report["total"]["hausdorffPercent"],
             "inverted": report["total"]["inverted"],
             "kappa min": report["total"]["kappaMin"],
+            # Mesh.CompoundOptimize: the worst kappa before it, its time
+            "optimization": report["total"].get("optimization"),
         }
     except (OSError, ValueError, KeyError, TypeError):
         return None
@@ -366,7 +368,8 @@ def is_whole(row):
 COLUMNS = [
     "mesh", "map", "whole", "surfaces meshed / all", "kept as input",
     "loops in / out", "non-manifold edges in / out", "errors", "warnings",
-    "Hausdorff (%)", "inverted", "kappa min", "triangles", "feature patches",
+    "Hausdorff (%)", "inverted", "kappa min", "kappa min before optimization",
+    "optimization (s)", "triangles", "feature patches",
     "after cleaning",
     "final patches", "splits", "layout (s)", "CPU (s)",
 ]
@@ -378,6 +381,7 @@ def text(value, form="%s"):
 
 def table_row(name, map_value, row):
     report, out, layout = row["report"], row["out"], row["layout"] or {}
+    optimization = report and report["optimization"]
     whole = "yes" if row["whole"] else "NO"
     if row["status"]:
         whole += " (%s)" % row["status"]
@@ -402,6 +406,8 @@ def table_row(name, map_value, row):
         text(report and report["hausdorff"], "%.3g"),
         text(report and report["inverted"]),
         text(report and report["kappa min"], "%.3g"),
+        text(optimization and optimization["kappaMinBefore"], "%.3g"),
+        text(optimization and optimization["seconds"], "%.2f"),
         text(elements),
         text(layout.get("feature")),
         text(after_cleaning),

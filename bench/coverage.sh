@@ -17,7 +17,8 @@
 # discrete surface meshed, as many boundary loops out as in), surfaces
 # meshed and kept as their input triangles (the safety net), boundary loops
 # and non-manifold edges in and out, errors and warnings in the log,
-# Hausdorff distance (% of the diagonal), inverted elements and kappa min
+# Hausdorff distance (% of the diagonal), inverted elements, kappa min (and
+# before Mesh.CompoundOptimize, with its time)
 # from Mesh.CompoundReportFile, triangles, Reparam's layout (feature
 # patches, after cleaning, final patches, splits, seconds) and CPU time;
 # then per map the meshes whole and the total CPU time.

@@ -10,7 +10,8 @@
 #                                     REPARAM_TABLE1_MAPS, default "3 4 5 0";
 #                                     REPARAM_TABLE1_MESHERS, default "5 6 1")
 #
-# Prints a Markdown table (kappa min, kappa mean, tau, elements, times,
+# Prints a Markdown table (kappa min, and before Mesh.CompoundOptimize with
+# its time, kappa mean, tau, elements, times,
 # faces meshed, inverted elements, faces where the map was not one-to-one
 # and the mean value map took over) and, per mesh, the best map x mesher:
 # every face meshed, fewest inverted elements, then the highest kappa min
@@ -58,8 +59,9 @@ mapNames = {"0": "Gmsh (0)", "3": "mean value (3)", "4": "FE conformal (4)",
             "5": "spectral (5)"}
 mesherNames = {"1": "MeshAdapt", "5": "Delaunay", "6": "Frontal-Delaunay"}
 print("| mesh | map | mesher | faces meshed | CreateGeometry (s) | Mesh 2 (s) "
-      "| elements | kappa min | kappa mean | tau (%) | inverted | MV fallbacks |")
-print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+      "| elements | kappa min | kappa min before optimization "
+      "| optimization (s) | kappa mean | tau (%) | inverted | MV fallbacks |")
+print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 best = {}
 order = []
 for r in rows:
@@ -73,16 +75,22 @@ for r in rows:
     f = dict(zip(r[2::2], r[3::2]))
     label, mesher = mapNames[f["map"]], mesherNames[f["algorithm"]]
     if kind == "timeout":
-        print("| %s | %s | %s | did not end within %s s ||||||||"
+        print("| %s | %s | %s | did not end within %s s ||||||||||"
               % (name, label, mesher, timeout))
         continue
     elements = int(f["triangles"]) + int(f["quadrangles"])
-    print("| %s | %s | %s | %s / %s | %.3f | %.3f | %d | %.3f | %.3f | %.1f "
-          "| %s | %s |" % (name, label, mesher, f["meshed"], f["faces"],
-                           float(f["geometry"]), float(f["mesh"]), elements,
-                           float(f["kappaMin"]), float(f["kappaMean"]),
-                           float(f["tau"]), f["inverted"],
-                           f["fallbacks"] if f["map"] != "0" else ""))
+    # Mesh.CompoundOptimize (Reparam's maps only): the worst triangle before
+    # it, and its time (within Mesh 2)
+    optimized = int(f.get("optimizedFaces", "0")) > 0
+    before = "%.3f" % float(f["kappaMinBeforeOptimization"]) if optimized else ""
+    seconds = "%.3f" % float(f["optimization"]) if optimized else ""
+    print("| %s | %s | %s | %s / %s | %.3f | %.3f | %d | %.3f | %s | %s | %.3f "
+          "| %.1f | %s | %s |" % (name, label, mesher, f["meshed"], f["faces"],
+                                  float(f["geometry"]), float(f["mesh"]),
+                                  elements, float(f["kappaMin"]), before,
+                                  seconds, float(f["kappaMean"]),
+                                  float(f["tau"]), f["inverted"],
+                                  f["fallbacks"] if f["map"] != "0" else ""))
     key = (f["meshed"] == f["faces"], -int(f["inverted"]),
            round(float(f["kappaMin"]), 2), float(f["kappaMean"]))
     if name not in best or key > best[name][0]:

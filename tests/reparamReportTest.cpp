@@ -95,8 +95,30 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   // distances against the union of the inputs' boxes (diagonal 5)
   EXPECT_TRUE(has(total, "\"hausdorffPercent\": 4,"));
   EXPECT_TRUE(has(total, "\"meanDistancePercent\": 0.35,"));
-  EXPECT_TRUE(has(total, "\"inverted\": 2}"));
+  EXPECT_TRUE(has(total, "\"inverted\": 2, \"optimization\": null}"));
   EXPECT_TRUE(has(total, "\"solve\": 0.5,"));
+  EXPECT_EQ(optimizationLine(reports), ""); // not optimized
+
+  // Mesh.CompoundOptimize's records: the worst before, the sums
+  reports[0].optimization.done = reports[1].optimization.done = true;
+  reports[0].optimization.kappaMinBefore = 0.2;
+  reports[1].optimization.kappaMinBefore = 0.1;
+  reports[0].optimization.seconds = 0.5;
+  reports[1].optimization.seconds = 0.25;
+  reports[0].optimization.inserted = 3;
+  reports[1].optimization.inserted = 1;
+  reports[1].optimization.againstBefore = 5;
+  reports[1].optimization.againstAfter = 2;
+  const std::string optimized = reportJson(reports);
+  EXPECT_TRUE(has(optimized.substr(optimized.find("\"total\"")),
+                  "\"optimization\": {\"kappaMinBefore\": 0.1, \"seconds\": "
+                  "0.75, \"insertedInputNodes\": 4, \"longEdgeSplits\": 0, "
+                  "\"flips\": 0, \"moves\": 0, \"againstInputBefore\": 5, "
+                  "\"againstInputAfter\": 2}}"));
+  EXPECT_TRUE(has(optimizationLine(reports),
+                  "kappa min 0.1 -> 0.3, 4 input nodes the mesh cut off "
+                  "inserted"))
+    << optimizationLine(reports);
   EXPECT_TRUE(has(total, "\"planarMesh\": 2}"));
   // a face without quadrangles has no eta: null, not 0
   std::string first = json.substr(0, json.find("\"surface\": 2"));
@@ -173,7 +195,16 @@ TEST(reparamReport, remeshReportsWhatEachStageDid)
   EXPECT_TRUE(has(json, "\"triangles\": " + std::to_string(k.triangles)));
   EXPECT_TRUE(has(json, "\"kappaMin\": " + number(k.min)));
   EXPECT_TRUE(has(json, "\"kappaMean\": " + number(k.mean)));
-  EXPECT_TRUE(has(json, "\"inverted\": 0}"));
+  EXPECT_TRUE(has(json, "\"inverted\": 0, \"optimization\": {"));
+  // Mesh.CompoundOptimize's record: the worst kappa before it, no worse
+  // after, and what it did
+  EXPECT_TRUE(has(json, "\"optimization\": {\"kappaMinBefore\": "));
+  const std::size_t at = json.find("\"kappaMinBefore\": ");
+  ASSERT_NE(at, std::string::npos);
+  const double before = std::atof(json.c_str() + at + 18);
+  EXPECT_GT(before, 0.);
+  EXPECT_LE(before, k.min);
+  EXPECT_TRUE(has(json, "\"againstInputAfter\": 0}"));
 
   // off: nothing measured, nothing kept
   gmsh::option::setNumber("Mesh.CompoundReport", 0);
