@@ -132,21 +132,22 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
   r.elements = gf->getNumMeshElements();
   r.firstElement = r.elements ? gf->getMeshElement(0) : nullptr;
   if(!gf->stl_triangles.empty() && r.elements) {
-    // Measured now, before a compound hands its elements back to its parts;
-    // the orientation vote reuses these searches (Geo/reparamOrient.cpp)
+    // Kept for the distances, measured for all faces at once after meshing;
+    // a compound hands its elements back to its parts before that. The
+    // orientation vote needs the inverted elements now
+    // (Geo/reparamOrient.cpp): the optimizer counted them, else searched
     r.hasInput = true;
     for(const SPoint3 &x : gf->stl_vertices_xyz) r.inputBox += x;
-    // the optimizer knows which triangles point against the input: not
-    // searched again
-    std::size_t inverted = 0;
+    r.input = inputTriangulationOf(gf);
+    r.output = surfaceMeshOf(gf);
+    r.fidelity.elements = r.output.numElements();
+    r.fidelity.diagonal = r.inputBox.diag();
     if(optimization && gf->quadrangles.empty())
-      inverted = optimization->reversed ?
-                   gf->triangles.size() - optimization->againstAfter :
-                   optimization->againstAfter;
-    r.fidelity = compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf),
-                                optimization && gf->quadrangles.empty() ?
-                                  &inverted :
-                                  nullptr);
+      r.fidelity.inverted = optimization->reversed ?
+                              gf->triangles.size() - optimization->againstAfter :
+                              optimization->againstAfter;
+    else
+      r.fidelity.inverted = countInverted(r.input, r.output);
   }
   // a face meshed twice before the report: keep the last mesh; faces may be
   // meshed in parallel (OpenMP builds)
@@ -175,23 +176,33 @@ std::vector<int> unparametrizedFaces(GModel *m)
 
 namespace {
 
-  // The faces' meshes against their inputs taken together, when every
-  // measured face still has the mesh measured (else null: the total then
-  // combines the faces' own distances)
+  // The distances of the faces' meshes to their inputs, each face's
+  // samples against all the faces' inputs and meshes taken together (one
+  // search), set in each report; the whole model's (null with one face:
+  // its own)
   std::unique_ptr<meshFidelity>
-  wholeModelDistances(GModel *m, const std::vector<faceReport> &reports)
+  measureDistances(std::vector<faceReport> &reports)
   {
     std::vector<surfaceMesh> inputs, outputs;
-    for(const faceReport &r : reports) {
+    std::vector<faceReport *> measured;
+    for(faceReport &r : reports) {
       if(!r.hasInput) continue;
-      GFace *gf = m->getFaceByTag(r.tag);
-      if(!gf || !sameMesh(r, gf)) return nullptr;
-      inputs.push_back(inputTriangulationOf(gf));
-      outputs.push_back(surfaceMeshOf(gf));
+      inputs.push_back(r.input);
+      outputs.push_back(r.output);
+      measured.push_back(&r);
     }
-    if(inputs.size() < 2) return nullptr; // one face: its own distances
-    return std::unique_ptr<meshFidelity>(
-      new meshFidelity(compareDistancesToInput(inputs, outputs)));
+    if(measured.empty()) return nullptr;
+    std::vector<meshFidelity> perFace;
+    meshFidelity whole = compareDistancesToInput(inputs, outputs, &perFace);
+    for(std::size_t i = 0; i < measured.size(); i++) {
+      meshFidelity &f = measured[i]->fidelity;
+      f.hausdorff = perFace[i].hausdorff;
+      f.meanDistance = perFace[i].meanDistance;
+      f.farthest = perFace[i].farthest;
+      f.farthestOnInput = perFace[i].farthestOnInput;
+    }
+    if(measured.size() < 2) return nullptr;
+    return std::unique_ptr<meshFidelity>(new meshFidelity(whole));
   }
 
 } // namespace
@@ -236,7 +247,7 @@ void reparamReportMeshedModel(GModel *m)
                                      r.fidelity.elements - r.fidelity.inverted);
     r.oriented = true;
   }
-  std::unique_ptr<meshFidelity> whole = wholeModelDistances(m, reports);
+  std::unique_ptr<meshFidelity> whole = measureDistances(reports);
   if(!reports.empty())
     for(const std::string &line : reportTable(reports, whole.get()))
       Msg::Info("Reparam: %s", line.c_str());

@@ -70,7 +70,12 @@ struct faceReport {
   optimizationRecord optimization;
   faceQuality quality;
   bool hasInput = false; // fidelity measured against an input triangulation
-  meshFidelity fidelity; // inverted: against the final orientation
+  // inverted: against the final orientation; the distances are measured
+  // for all faces at once by reparamReportMeshedModel
+  meshFidelity fidelity;
+  // the face's input and new mesh, as meshed (a compound's hands its
+  // elements back to its parts), for the distances
+  surfaceMesh input, output;
   SBoundingBox3d inputBox; // to relate the distances of several faces
   bool oriented = false; // fidelity.inverted is after orientation
   // to tell whether the mesh measured is still the face's mesh

@@ -166,11 +166,15 @@ namespace {
   }
 
   // The meshes as one (nodes repeated where faces meet: harmless for
-  // distances), quadrangles cut in two triangles
-  surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes)
+  // distances), quadrangles cut in two triangles; the mesh each node and
+  // element came from in `pointPart` and `elementPart`
+  surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes,
+                               std::vector<int> *pointPart = nullptr,
+                               std::vector<int> *elementPart = nullptr)
   {
     surfaceMesh u;
-    for(const surfaceMesh &m : meshes) {
+    for(std::size_t i = 0; i < meshes.size(); i++) {
+      const surfaceMesh &m = meshes[i];
       const int offset = (int)u.points.size();
       u.points.insert(u.points.end(), m.points.begin(), m.points.end());
       for(const auto &t : m.triangles)
@@ -179,27 +183,66 @@ namespace {
         u.triangles.push_back({{q[0] + offset, q[1] + offset, q[2] + offset}});
         u.triangles.push_back({{q[0] + offset, q[2] + offset, q[3] + offset}});
       }
+      if(pointPart) pointPart->resize(u.points.size(), (int)i);
+      if(elementPart) elementPart->resize(u.triangles.size(), (int)i);
     }
     return u;
+  }
+
+  // distances() with each sample counted for its part too
+  oneSided distancesByPart(const surfaceMesh &from,
+                           const std::vector<int> &pointPart,
+                           const std::vector<int> &elementPart,
+                           const closestTriangleSearch &search,
+                           std::vector<oneSided> &parts)
+  {
+    oneSided s;
+    for(std::size_t i = 0; i < from.points.size(); i++) {
+      const double d = search.closest(from.points[i]).distance;
+      s.add(d, from.points[i]);
+      parts[pointPart[i]].add(d, from.points[i]);
+    }
+    for(std::size_t i = 0; i < from.triangles.size(); i++) {
+      const SPoint3 g = centroid<3>(from, from.triangles[i]);
+      const double d = search.closest(g).distance;
+      s.add(d, g);
+      parts[elementPart[i]].add(d, g);
+    }
+    return s;
   }
 
 } // namespace
 
 meshFidelity compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
-                                     const std::vector<surfaceMesh> &outputs)
+                                     const std::vector<surfaceMesh> &outputs,
+                                     std::vector<meshFidelity> *perMesh)
 {
   meshFidelity f;
-  surfaceMesh input = unionAsTriangles(inputs);
-  surfaceMesh output = unionAsTriangles(outputs);
+  std::vector<int> inputPoint, inputElement, outputPoint, outputElement;
+  surfaceMesh input = unionAsTriangles(inputs, &inputPoint, &inputElement);
+  surfaceMesh output = unionAsTriangles(outputs, &outputPoint, &outputElement);
   f.elements = output.triangles.size();
   SBoundingBox3d box;
   for(const SPoint3 &p : input.points) box += p;
   if(!input.points.empty()) f.diagonal = box.diag();
+  if(perMesh) {
+    perMesh->assign(outputs.size(), meshFidelity());
+    for(std::size_t i = 0; i < outputs.size() && i < inputs.size(); i++) {
+      SBoundingBox3d own;
+      for(const SPoint3 &p : inputs[i].points) own += p;
+      (*perMesh)[i].elements = outputs[i].numElements();
+      if(!inputs[i].points.empty()) (*perMesh)[i].diagonal = own.diag();
+    }
+  }
   if(input.triangles.empty() || output.triangles.empty()) return f;
   closestTriangleSearch onInput(input.points, input.triangles);
   closestTriangleSearch onOutput(output.points, output.triangles);
-  combine(distances(output, input, onInput), distances(input, output, onOutput),
-          f);
+  std::vector<oneSided> there(outputs.size()), back(inputs.size());
+  combine(distancesByPart(output, outputPoint, outputElement, onInput, there),
+          distancesByPart(input, inputPoint, inputElement, onOutput, back), f);
+  if(perMesh)
+    for(std::size_t i = 0; i < perMesh->size() && i < back.size(); i++)
+      combine(there[i], back[i], (*perMesh)[i]);
   return f;
 }
 

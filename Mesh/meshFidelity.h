@@ -56,9 +56,13 @@ meshFidelity compareToInput(const surfaceMesh &input,
 // distance. Face by face, an input node on a curve between two faces is as
 // far from its own face's mesh as the curve's chords are from the input's
 // zig-zag along it, while the neighbour's mesh covers it (tooth: 0.79 %
-// face by face, 0.24 % for the whole).
-meshFidelity compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
-                                     const std::vector<surfaceMesh> &outputs);
+// face by face, 0.24 % for the whole). With perMesh, also each face's
+// samples (its nodes and centroids, its input's) against the whole, in one
+// search.
+meshFidelity
+compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
+                        const std::vector<surfaceMesh> &outputs,
+                        std::vector<meshFidelity> *perMesh = nullptr);
 
 // Whether the triangle (a, b, c) points against the input under it (the
 // test meshFidelity::inverted counts with)
