@@ -49,6 +49,9 @@ namespace {
     const bool reversed = 2 * against > gf->triangles.size();
     invertedRepair repair = splitInvertedTriangles(
       gf, [&](MTriangle *t) { return raw(t) != reversed; });
+    // a mesh changed after its optimization is optimized again (in
+    // discreteFace::mesh), with its own count of triangles against the input
+    if(repair.changes || repair.moves) forgetOptimization(gf);
     if(repair.changes || repair.moves)
       Msg::Info("Reparam: surface %d: %lu triangles against the input, %lu "
                 "after %lu edge splits or flips and %lu node moves in %lu "

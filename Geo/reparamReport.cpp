@@ -110,6 +110,12 @@ const optimizationRecord *findOptimization(const GFace *gf)
   return &r;
 }
 
+void forgetOptimization(const GFace *gf)
+{
+  std::lock_guard<std::mutex> lock(reportsMutex());
+  optimizations().erase(gf);
+}
+
 void reparamReportMeshedFace(GFace *gf, double seconds)
 {
   if(!getReparamOptions().report) return;
@@ -128,6 +134,7 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
   }
   r.meshTime = seconds;
   r.quality = computeFaceQuality({gf});
+  r.poorTriangles = countPoorTriangleCauses(gf);
   r.face = gf;
   r.elements = gf->getNumMeshElements();
   r.firstElement = r.elements ? gf->getMeshElement(0) : nullptr;
@@ -251,6 +258,8 @@ void reparamReportMeshedModel(GModel *m)
   if(!reports.empty())
     for(const std::string &line : reportTable(reports, whole.get()))
       Msg::Info("Reparam: %s", line.c_str());
+  const std::string poor = poorTrianglesLine(reports);
+  if(!poor.empty()) Msg::Info("Reparam: %s", poor.c_str());
   const std::string optimization = optimizationLine(reports);
   if(!optimization.empty()) Msg::Info("Reparam: %s", optimization.c_str());
   const std::string farthest = farthestPointLine(reports, whole.get());

@@ -16,6 +16,7 @@
 #include "SPoint2.h"
 #include "faceQuality.h"
 #include "meshFidelity.h"
+#include "reparamPoorTriangles.h"
 
 class GFace;
 class GModel;
@@ -60,6 +61,8 @@ struct optimizationRecord {
 void recordOptimization(const GFace *gf, const optimizationRecord &record);
 // The record of the optimization of gf's current mesh, or null
 const optimizationRecord *findOptimization(const GFace *gf);
+// Forgets it: gf's mesh was changed since (same element count or not)
+void forgetOptimization(const GFace *gf);
 
 // One line of the report
 struct faceReport {
@@ -69,6 +72,8 @@ struct faceReport {
   double meshTime = 0.; // planar mesher and optimization
   optimizationRecord optimization;
   faceQuality quality;
+  // triangles below kappa 0.3 by cause (Mesh/poorTriangleCause.h)
+  poorTriangleCounts poorTriangles{};
   bool hasInput = false; // fidelity measured against an input triangulation
   // inverted: against the final orientation; the distances are measured
   // for all faces at once by reparamReportMeshedModel
@@ -102,6 +107,11 @@ void reparamReportMeshedModel(GModel *m);
 // The discrete faces of m without a parametrization nor a mesh (their
 // CreateGeometry failed): holes in the mesh, named by the report
 std::vector<int> unparametrizedFaces(GModel *m);
+
+// The report's line on the causes of the triangles below kappa 0.3 (empty
+// without any): "12 triangles below kappa 0.3: 8 where curves meet at a
+// sharp angle, ..."
+std::string poorTrianglesLine(const std::vector<faceReport> &reports);
 
 // The report's line on Mesh.CompoundOptimize (empty if it did nothing):
 // "optimization on the input: kappa min A -> B, ..."

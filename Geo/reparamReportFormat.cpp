@@ -53,6 +53,8 @@ namespace {
       t.parametrization.checkTime += p.checkTime;
       t.parametrization.fallbackTime += p.fallbackTime;
       t.meshTime += r.meshTime;
+      for(int c = 0; c < numPoorTriangleCauses; c++)
+        t.poorTriangles[c] += r.poorTriangles[c];
       const optimizationRecord &o = r.optimization;
       if(o.done) {
         t.optimization.kappaMinBefore = t.optimization.done ?
@@ -200,6 +202,14 @@ namespace {
     }
     s += ", \"inverted\": " +
          (r.hasInput ? std::to_string(r.fidelity.inverted) : "null");
+    // the causes of the triangles below kappa 0.3
+    const char *causes[numPoorTriangleCauses] = {
+      "sharpCurveAngle", "shortCurveSegment", "narrowStrip", "inside"};
+    s += ", \"poorTriangleCauses\": {";
+    for(int c = 0; c < numPoorTriangleCauses; c++)
+      s += std::string(c ? ", \"" : "\"") + causes[c] +
+           "\": " + std::to_string(r.poorTriangles[c]);
+    s += "}";
     const optimizationRecord &o = r.optimization;
     if(o.done)
       s += ", \"optimization\": {\"kappaMinBefore\": " +
@@ -237,6 +247,25 @@ std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
   snprintf(surfaces, sizeof(surfaces), "%lu surf.", reports.size());
   lines.push_back(tableLine("total", surfaces, total(reports, whole)));
   return lines;
+}
+
+std::string poorTrianglesLine(const std::vector<faceReport> &reports)
+{
+  const faceReport t = total(reports, nullptr);
+  std::size_t all = 0;
+  for(std::size_t n : t.poorTriangles) all += n;
+  if(!all) return "";
+  std::string line = std::to_string(all) + " triangle" + (all > 1 ? "s" : "") +
+                     " below kappa 0.3:";
+  bool first = true;
+  for(int c = 0; c < numPoorTriangleCauses; c++) {
+    if(!t.poorTriangles[c]) continue;
+    line += std::string(first ? " " : ", ") +
+            std::to_string(t.poorTriangles[c]) + " at " +
+            poorTriangleCauseName((poorTriangleCause)c);
+    first = false;
+  }
+  return line;
 }
 
 std::string optimizationLine(const std::vector<faceReport> &reports)

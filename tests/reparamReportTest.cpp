@@ -95,7 +95,24 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   // distances against the union of the inputs' boxes (diagonal 5)
   EXPECT_TRUE(has(total, "\"hausdorffPercent\": 4,"));
   EXPECT_TRUE(has(total, "\"meanDistancePercent\": 0.35,"));
-  EXPECT_TRUE(has(total, "\"inverted\": 2, \"optimization\": null}"));
+  EXPECT_TRUE(has(total, "\"inverted\": 2, \"poorTriangleCauses\": "
+                        "{\"sharpCurveAngle\": 0, \"shortCurveSegment\": 0, "
+                        "\"narrowStrip\": 0, \"inside\": 0}, \"optimization\": "
+                        "null}"));
+  EXPECT_EQ(poorTrianglesLine(reports), "");
+  // the causes of the poor triangles: summed, named
+  reports[0].poorTriangles[(int)poorTriangleCause::sharpCurveAngle] = 2;
+  reports[1].poorTriangles[(int)poorTriangleCause::sharpCurveAngle] = 1;
+  reports[1].poorTriangles[(int)poorTriangleCause::inside] = 1;
+  EXPECT_EQ(poorTrianglesLine(reports),
+            "4 triangles below kappa 0.3: 3 at curves meeting at a sharp "
+            "angle, 1 at folds inside surfaces");
+  const std::string causes = reportJson(reports);
+  EXPECT_TRUE(has(causes.substr(causes.find("\"total\"")),
+                  "\"poorTriangleCauses\": {\"sharpCurveAngle\": 3, "
+                  "\"shortCurveSegment\": 0, \"narrowStrip\": 0, "
+                  "\"inside\": 1}"));
+  reports[0].poorTriangles = reports[1].poorTriangles = poorTriangleCounts{};
   EXPECT_TRUE(has(total, "\"solve\": 0.5,"));
   EXPECT_EQ(optimizationLine(reports), ""); // not optimized
 
@@ -195,7 +212,8 @@ TEST(reparamReport, remeshReportsWhatEachStageDid)
   EXPECT_TRUE(has(json, "\"triangles\": " + std::to_string(k.triangles)));
   EXPECT_TRUE(has(json, "\"kappaMin\": " + number(k.min)));
   EXPECT_TRUE(has(json, "\"kappaMean\": " + number(k.mean)));
-  EXPECT_TRUE(has(json, "\"inverted\": 0, \"optimization\": {"));
+  EXPECT_TRUE(has(json, "\"inverted\": 0, \"poorTriangleCauses\": {"));
+  EXPECT_TRUE(has(json, "\"inside\": 0}, \"optimization\": {"));
   // Mesh.CompoundOptimize's record: the worst kappa before it, no worse
   // after, and what it did
   EXPECT_TRUE(has(json, "\"optimization\": {\"kappaMinBefore\": "));
