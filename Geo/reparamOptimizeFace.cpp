@@ -1,5 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <algorithm>
+#include <set>
 #include <unordered_map>
 #include "GEdge.h"
 #include "GFace.h"
@@ -69,66 +71,75 @@ namespace {
     return 2 * against > tested;
   }
 
-  // The (u, v) of point p on input triangle t of gf (barycentric
-  // interpolation of its corners' (u, v): the map is linear on t)
-  SPoint2 uvOnInputTriangle(GFace *gf, int t, const SPoint3 &p)
-  {
-    const int *c = &gf->stl_triangles[3 * t];
-    const SPoint3 &a = gf->stl_vertices_xyz[c[0]],
-                  &b = gf->stl_vertices_xyz[c[1]],
-                  &d = gf->stl_vertices_xyz[c[2]];
-    const SVector3 e1(a, b), e2(a, d), ep(a, p);
-    const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
-    const double det = g11 * g22 - g12 * g12;
-    double l1 = 0., l2 = 0.;
-    if(det > 1e-14 * g11 * g22) {
-      l1 = (g22 * dot(ep, e1) - g12 * dot(ep, e2)) / det;
-      l2 = (g11 * dot(ep, e2) - g12 * dot(ep, e1)) / det;
-    }
-    const SPoint2 &ua = gf->stl_vertices_uv[c[0]],
-                  &ub = gf->stl_vertices_uv[c[1]],
-                  &ud = gf->stl_vertices_uv[c[2]];
-    return ua + (ub - ua) * l1 + (ud - ua) * l2;
-  }
+  // The (u, v) of point p of gf's input, as gf's parametric interface
+  // knows it: Gmsh replaces the map of a planar face by coordinates on its
+  // mean plane (discreteFace::param::checkPlanar), without changing
+  // stl_vertices_uv
+  SPoint2 uvOf(GFace *gf, const SPoint3 &p) { return gf->parFromPoint(p); }
 
-  // Moved nodes get the (u, v) of the input point they lie on, new nodes
-  // (input nodes inserted) their input node's
-  void writeNodes(GFace *gf, const optimizableMesh &m,
-                  std::vector<MVertex *> &nodes)
+  // The node of each point of m: moved nodes get the (u, v) of the input
+  // point they lie on, new nodes (input nodes inserted, edges split) are
+  // created; the nodes of gf that no point keeps (edges collapsed) are
+  // deleted
+  std::vector<MVertex *> writeNodes(GFace *gf, const optimizableMesh &m,
+                                    const std::vector<MVertex *> &nodes)
   {
+    std::vector<MVertex *> out(m.points.size(), nullptr);
+    std::vector<bool> kept(nodes.size(), false);
     for(std::size_t i = 0; i < m.points.size(); i++) {
       const SPoint3 &p = m.points[i];
-      if(i >= nodes.size()) {
-        const SPoint2 uv = m.inputNode[i] >= 0 ?
-                             gf->stl_vertices_uv[m.inputNode[i]] :
-                             uvOnInputTriangle(gf, m.landing[i], p);
-        MFaceVertex *v = new MFaceVertex(p.x(), p.y(), p.z(), gf, uv.x(),
-                                         uv.y());
-        gf->mesh_vertices.push_back(v);
-        nodes.push_back(v);
+      const int origin = m.origin[i];
+      if(origin < 0) {
+        const SPoint2 uv = uvOf(gf, p);
+        out[i] = new MFaceVertex(p.x(), p.y(), p.z(), gf, uv.x(), uv.y());
+        gf->mesh_vertices.push_back(out[i]);
         continue;
       }
+      out[i] = nodes[origin];
+      kept[origin] = true;
       if(m.landing[i] < 0) continue;
-      nodes[i]->setXYZ(p.x(), p.y(), p.z());
-      const SPoint2 uv = uvOnInputTriangle(gf, m.landing[i], p);
-      nodes[i]->setParameter(0, uv.x());
-      nodes[i]->setParameter(1, uv.y());
+      out[i]->setXYZ(p.x(), p.y(), p.z());
+      const SPoint2 uv = uvOf(gf, p);
+      out[i]->setParameter(0, uv.x());
+      out[i]->setParameter(1, uv.y());
     }
+    std::set<MVertex *> gone;
+    for(std::size_t i = 0; i < nodes.size(); i++)
+      if(!kept[i]) gone.insert(nodes[i]); // only face nodes are collapsed
+    if(!gone.empty()) {
+      std::vector<MVertex *> &own = gf->mesh_vertices;
+      own.erase(std::remove_if(own.begin(), own.end(),
+                               [&](MVertex *v) { return gone.count(v) > 0; }),
+                own.end());
+      for(MVertex *v : gone) delete v;
+    }
+    return out;
   }
 
+  // gf's triangles as m's: kept ones reused, new ones created, removed ones
+  // deleted
   void writeBack(GFace *gf, const optimizableMesh &m,
-                 std::vector<MVertex *> &nodes)
+                 const std::vector<MVertex *> &nodes)
   {
-    writeNodes(gf, m, nodes);
+    const std::vector<MVertex *> out = writeNodes(gf, m, nodes);
+    std::vector<MTriangle *> triangles;
+    std::vector<bool> kept(gf->triangles.size(), false);
     for(std::size_t t = 0; t < m.triangles.size(); t++) {
-      MVertex *c[3] = {nodes[m.triangles[t][0]], nodes[m.triangles[t][1]],
-                       nodes[m.triangles[t][2]]};
-      if(t >= gf->triangles.size()) {
-        gf->triangles.push_back(new MTriangle(c[0], c[1], c[2]));
+      MVertex *c[3] = {out[m.triangles[t][0]], out[m.triangles[t][1]],
+                       out[m.triangles[t][2]]};
+      const int origin = m.triangleOrigin[t];
+      if(origin < 0) {
+        triangles.push_back(new MTriangle(c[0], c[1], c[2]));
         continue;
       }
-      for(int k = 0; k < 3; k++) gf->triangles[t]->setVertex(k, c[k]);
+      MTriangle *old = gf->triangles[origin];
+      kept[origin] = true;
+      for(int k = 0; k < 3; k++) old->setVertex(k, c[k]);
+      triangles.push_back(old);
     }
+    for(std::size_t t = 0; t < gf->triangles.size(); t++)
+      if(!kept[t]) delete gf->triangles[t];
+    gf->triangles = triangles;
   }
 
 } // namespace
@@ -149,14 +160,19 @@ bool reparamOptimizeMeshedFace(GFace *gf)
   const closestTriangleSearch onInput(input.points, input.triangles);
   meshOptimizationOptions o;
   o.reversed = reversedOnInput(m, input, onInput);
+  // 2: coarsen too where the curves' short segments made the mesh finer
+  // than asked (fewer triangles, edges closer to the size; slower)
+  o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;
   const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);
-  if(r.flips || r.moves || r.inserted || r.splits) writeBack(gf, m, nodes);
+  if(r.flips || r.moves || r.inserted || r.splits || r.collapses)
+    writeBack(gf, m, nodes);
   optimizationRecord done;
   done.done = true;
   done.kappaMinBefore = r.minBefore;
   done.seconds = TimeOfDay() - t0;
   done.inserted = r.inserted;
   done.splits = r.splits;
+  done.collapses = r.collapses;
   done.flips = r.flips;
   done.moves = r.moves;
   done.againstBefore = r.againstBefore;
@@ -165,15 +181,17 @@ bool reparamOptimizeMeshedFace(GFace *gf)
   done.elements = gf->getNumMeshElements();
   done.firstElement = gf->getMeshElement(0);
   recordOptimization(gf, done);
-  if(!r.belowBefore && !r.againstBefore && !r.inserted && !r.splits)
+  if(!r.belowBefore && !r.againstBefore && !r.inserted && !r.splits &&
+     !r.collapses)
     return true;
   Msg::Info("Reparam: surface %d: optimized on the input: kappa min %.3g -> "
             "%.3g, %lu -> %lu triangles below %g, %lu -> %lu against the "
             "input; %lu input nodes the mesh cut off inserted, %lu long "
-            "edges split, %lu flips and %lu node moves in %lu passes (%g s)",
+            "edges split, %lu short ones collapsed, %lu flips and %lu node "
+            "moves in %lu passes (%g s)",
             gf->tag(), r.minBefore, r.minAfter, r.belowBefore, r.belowAfter,
             o.target, r.againstBefore, r.againstAfter, r.inserted, r.splits,
-            r.flips, r.moves, r.passes,
+            r.collapses, r.flips, r.moves, r.passes,
             TimeOfDay() - t0);
   return true;
 }

@@ -75,7 +75,17 @@ double opt_mesh_compound_curve_corners(OPT_ARGS_NUM)
 
 double opt_mesh_compound_optimize(OPT_ARGS_NUM)
 {
-  return onOffOption(getReparamOptions().optimize, action, val);
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) {
+    const int value = (int)val;
+    if(value != val || value < 0 || value > 2)
+      Msg::Error("Mesh.CompoundOptimize must be 0, 1 or 2 (got %g): keeping "
+                 "%d",
+                 val, o.optimize);
+    else
+      o.optimize = value;
+  }
+  return o.optimize;
 }
 
 double opt_mesh_compound_noise_size(OPT_ARGS_NUM)

@@ -38,9 +38,11 @@ struct reparamOptions {
   // Mesh.CompoundCurveCorners: nodes of discrete curves on the input's
   // corners
   bool curveCorners = true;
-  // Mesh.CompoundOptimize: flips and node moves on the input surface around
-  // the poor triangles of each new face mesh
-  bool optimize = true;
+  // Mesh.CompoundOptimize: 1: each new face mesh optimized on its input
+  // (input nodes it cuts off inserted, long edges split, flips and node
+  // moves around its poor triangles); 2: also its short edges collapsed;
+  // 0: none
+  int optimize = 1;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none

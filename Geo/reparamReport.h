@@ -49,7 +49,7 @@ findParametrization(const std::vector<SPoint2> &uv);
 struct optimizationRecord {
   bool done = false;
   double kappaMinBefore = 1., seconds = 0.;
-  std::size_t inserted = 0, splits = 0, flips = 0, moves = 0;
+  std::size_t inserted = 0, splits = 0, collapses = 0, flips = 0, moves = 0;
   std::size_t againstBefore = 0, againstAfter = 0;
   bool reversed = false; // the mesh turns against the input (most of it)
   // the mesh it left, to tell whether it is still gf's

@@ -64,6 +64,7 @@ namespace {
         t.optimization.seconds += o.seconds;
         t.optimization.inserted += o.inserted;
         t.optimization.splits += o.splits;
+        t.optimization.collapses += o.collapses;
         t.optimization.flips += o.flips;
         t.optimization.moves += o.moves;
         t.optimization.againstBefore += o.againstBefore;
@@ -216,6 +217,7 @@ namespace {
            number(o.kappaMinBefore) + ", \"seconds\": " + number(o.seconds) +
            ", \"insertedInputNodes\": " + std::to_string(o.inserted) +
            ", \"longEdgeSplits\": " + std::to_string(o.splits) +
+           ", \"shortEdgeCollapses\": " + std::to_string(o.collapses) +
            ", \"flips\": " + std::to_string(o.flips) +
            ", \"moves\": " + std::to_string(o.moves) +
            ", \"againstInputBefore\": " + std::to_string(o.againstBefore) +
@@ -277,9 +279,10 @@ std::string optimizationLine(const std::vector<faceReport> &reports)
   snprintf(line, sizeof(line),
            "optimization on the input (Mesh.CompoundOptimize): kappa min "
            "%.3g -> %.3g, %lu input nodes the mesh cut off inserted, %lu long "
-           "edges split, %lu flips, %lu node moves, %lu -> %lu triangles "
-           "against the input, in %g s",
-           o.kappaMinBefore, t.quality.kappaMin, o.inserted, o.splits, o.flips,
+           "edges split, %lu short ones collapsed, %lu flips, %lu node moves, "
+           "%lu -> %lu triangles against the input, in %g s",
+           o.kappaMinBefore, t.quality.kappaMin, o.inserted, o.splits,
+           o.collapses, o.flips,
            o.moves, o.againstBefore, o.againstAfter, o.seconds);
   return line;
 }

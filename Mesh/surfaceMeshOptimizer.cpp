@@ -5,6 +5,7 @@
 #include "closestTriangle.h"
 #include "farInputNodes.h"
 #include "longEdgeSplit.h"
+#include "shortEdgeCollapse.h"
 #include "meshFidelity.h"
 #include "surfaceMeshOptimizer.h"
 #include "triangleQuality.h"
@@ -64,6 +65,12 @@ namespace {
 
     bool tryFlips(int t);
     bool tryMove(int v);
+    void addNeighbours(int v, std::set<int> &to) const
+    {
+      to.insert(v);
+      for(int t : _around[v])
+        for(int w : _m.triangles[t]) to.insert(w);
+    }
 
   private:
     optimizableMesh &_m;
@@ -281,9 +288,15 @@ namespace {
   void improvePoorTriangles(optimizableMesh &m, const surfaceMesh &input,
                             const closestTriangleSearch &onInput,
                             const meshOptimizationOptions &o,
-                            meshOptimizationResult &r)
+                            meshOptimizationResult &r,
+                            const std::vector<int> &smooth)
   {
     optimizer opt(m, input, onInput, o);
+    // first the nodes around the edges collapsed: their triangles are valid
+    // but uneven
+    std::set<int> around;
+    for(int v : smooth) opt.addNeighbours(v, around);
+    for(int v : around) r.moves += opt.tryMove(v);
     std::vector<int> below = opt.trianglesBelowTarget();
     for(int pass = 0; !below.empty() && pass < o.maxPasses; pass++) {
       r.passes++;
@@ -331,6 +344,15 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
   m.landing.resize(m.points.size(), -1);
   m.inputNode.resize(m.points.size(), -1);
   m.movable.resize(m.points.size(), false);
+  if(m.origin.size() != m.points.size()) {
+    m.origin.resize(m.points.size());
+    for(std::size_t i = 0; i < m.points.size(); i++) m.origin[i] = (int)i;
+  }
+  if(m.triangleOrigin.size() != m.triangles.size()) {
+    m.triangleOrigin.resize(m.triangles.size());
+    for(std::size_t t = 0; t < m.triangles.size(); t++)
+      m.triangleOrigin[t] = (int)t;
+  }
   m.against.resize(m.triangles.size());
   for(std::size_t t = 0; t < m.triangles.size(); t++) {
     const std::array<int, 3> &c = m.triangles[t];
@@ -347,10 +369,17 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
         0;
     const std::size_t splits =
       splitLongEdges(m, input, onInput, o.reversed, o.splitAbove);
+    std::vector<int> collapsedInto;
+    const std::size_t collapses =
+      o.collapseBelow > 0. ?
+        collapseShortEdges(m, input, onInput, o.reversed, o.collapseBelow,
+                           4. * o.tolerance, &collapsedInto) :
+        0;
     r.inserted += inserted;
     r.splits += splits;
-    improvePoorTriangles(m, input, onInput, o, r);
-    if(!inserted && !splits) break;
+    r.collapses += collapses;
+    improvePoorTriangles(m, input, onInput, o, r, collapsedInto);
+    if(!inserted && !splits && !collapses) break;
   }
   r.minAfter = worstKappa(m);
   countPoorTriangles(m, o, r.belowAfter, r.againstAfter);

@@ -38,9 +38,13 @@ struct optimizableMesh {
   // per triangle, set by the optimizer: whether it points against the input
   // (each change leaves none of its new triangles so)
   std::vector<bool> against;
-  // per point, the mesh size asked there (empty: no edge is split); a new
-  // point gets the mean of the corners of the triangle it splits
+  // per point, the mesh size asked there (empty: no edge is split nor
+  // collapsed); a new point gets the mean of the corners of the triangle it
+  // splits
   std::vector<double> size;
+  // per point and per triangle, the index it had when the optimizer began
+  // (-1: new); edge collapses remove points and triangles
+  std::vector<int> origin, triangleOrigin;
 };
 
 struct meshOptimizationOptions {
@@ -56,8 +60,9 @@ struct meshOptimizationOptions {
   // around are inserted (a crease or tip the mesh cuts off; 0: none)
   double insertAbove = 0.25;
   // inner edges longer than this times the size at their ends are split
-  // (Mesh/longEdgeSplit.h)
-  double splitAbove = 1.6;
+  // (Mesh/longEdgeSplit.h), those shorter than collapseBelow times it
+  // collapsed (Mesh/shortEdgeCollapse.h; 0: none)
+  double splitAbove = 1.6, collapseBelow = 0.;
   int maxInsertionRounds = 3;
 };
 
@@ -68,12 +73,13 @@ struct meshOptimizationResult {
   std::size_t flips = 0, moves = 0, passes = 0;
   std::size_t inserted = 0; // input nodes
   std::size_t splits = 0; // long edges
+  std::size_t collapses = 0; // short edges
 };
 
 // Optimizes m in place against the input triangulation `input` (searched by
 // onInput, built on it): inserts the inner input nodes the mesh cuts off
-// (Mesh/farInputNodes.h) and splits the long edges (Mesh/longEdgeSplit.h),
-// then flips edges not locked and moves movable
+// (Mesh/farInputNodes.h), splits the long edges (Mesh/longEdgeSplit.h) and
+// collapses the short ones (Mesh/shortEdgeCollapse.h), then flips edges not locked and moves movable
 // nodes to their neighbours' centroid (or halfway), projected on the input,
 // around the triangles below the target or pointing against the input
 // (which count as worse than any triangle along it), pass after pass until

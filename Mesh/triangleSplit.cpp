@@ -74,6 +74,7 @@ bool triangleSplitter::apply(const std::vector<int> &out,
   _m.movable.push_back(movable);
   _m.landing.push_back(_onInput.closest(x).triangle);
   _m.inputNode.push_back(inputNode);
+  if(_m.origin.size() + 1 == _m.points.size()) _m.origin.push_back(-1);
   if(_m.size.size() + 1 == _m.points.size()) {
     const std::array<int, 3> &c = _m.triangles[out[0]];
     _m.size.push_back((_m.size[c[0]] + _m.size[c[1]] + _m.size[c[2]]) / 3.);
@@ -85,6 +86,8 @@ bool triangleSplitter::apply(const std::vector<int> &out,
     else {
       _m.triangles.push_back(in[i]);
       _touched.push_back(true);
+      if(_m.triangleOrigin.size() + 1 == _m.triangles.size())
+        _m.triangleOrigin.push_back(-1);
       if(trackAgainst) _m.against.push_back(false);
     }
     if(trackAgainst && i < out.size()) _m.against[out[i]] = false;

@@ -141,3 +141,24 @@ TEST(reparamOptimizeFace, aRidgeBelowTheFeatureAngleIsNotCutOff)
   EXPECT_LT(optimized.worstUvMismatch, 1e-9);
   EXPECT_EQ(optimized.freeEdges, plain.freeEdges);
 }
+
+TEST(reparamOptimizeFace, levelTwoCollapsesWhatTheCurvesMadeTooFine)
+{
+  // A square with a small plateau in its middle, on walls one input cell
+  // wide: their short curves' segments make the planar mesher refine the
+  // square around them (Mesh.MeshSizeExtendFromBoundary), finer than asked;
+  // Mesh.CompoundOptimize = 2 collapses short edges there: fewer triangles,
+  // none worse than 0.3, the mesh whole and its nodes on the map
+  testTriangulation plateau = rectangleGrid(40, 40, 1., 1.);
+  for(SPoint3 &p : plateau.points)
+    if(std::fabs(p.x() - 0.5) < 0.06 && std::fabs(p.y() - 0.5) < 0.06)
+      p = SPoint3(p.x(), p.y(), 0.05);
+  const remeshed one = remesh(plateau, 0.1, 1);
+  const remeshed two = remesh(plateau, 0.1, 2);
+  EXPECT_LT(two.triangles.size(), 0.85 * one.triangles.size()); // 552 -> 420
+  EXPECT_GE(two.worstKappa, std::min(one.worstKappa, 0.3));
+  EXPECT_EQ(two.freeEdges, one.freeEdges);
+  // the square is planar: Gmsh's own (u, v) on its mean plane
+  EXPECT_LT(one.worstUvMismatch, 1e-9);
+  EXPECT_LT(two.worstUvMismatch, 1e-9);
+}

@@ -130,7 +130,7 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   EXPECT_TRUE(has(optimized.substr(optimized.find("\"total\"")),
                   "\"optimization\": {\"kappaMinBefore\": 0.1, \"seconds\": "
                   "0.75, \"insertedInputNodes\": 4, \"longEdgeSplits\": 0, "
-                  "\"flips\": 0, \"moves\": 0, \"againstInputBefore\": 5, "
+                  "\"shortEdgeCollapses\": 0, \"flips\": 0, \"moves\": 0, \"againstInputBefore\": 5, "
                   "\"againstInputAfter\": 2}}"));
   EXPECT_TRUE(has(optimizationLine(reports),
                   "kappa min 0.1 -> 0.3, 4 input nodes the mesh cut off "

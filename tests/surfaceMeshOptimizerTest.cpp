@@ -9,6 +9,7 @@
 #include "closestTriangle.h"
 #include "farInputNodes.h"
 #include "longEdgeSplit.h"
+#include "shortEdgeCollapse.h"
 #include "meshFidelity.h"
 #include "surfaceMeshOptimizer.h"
 #include "testPatches.h"
@@ -244,4 +245,63 @@ TEST(surfaceMeshOptimizer, longEdgesAreSplitOnTheInput)
   // no sizes: nothing split
   optimizableMesh unsized = optimizable(bump(rectangleGrid(4, 4, 1., 1.)));
   EXPECT_EQ(splitLongEdges(unsized, in, onInput, false, 1.6), 0u);
+}
+
+TEST(surfaceMeshOptimizer, shortEdgesAreCollapsedKeepingTheMeshValid)
+{
+  // A 12 x 12 grid of the bump asked at twice its cell size: inner edges
+  // shorter than 0.6 times the size (the cells' sides) are collapsed; the
+  // border stays, the mesh stays a valid manifold along the input, and the
+  // origins say which points and triangles are left
+  const testTriangulation input = bump(rectangleGrid(60, 60, 1., 1.));
+  const surfaceMesh in = asSurfaceMesh(input);
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  optimizableMesh m = optimizable(bump(rectangleGrid(12, 12, 1., 1.)));
+  for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+  const std::vector<SPoint3> before = m.points;
+  const std::vector<bool> movable = m.movable;
+  m.size.assign(m.points.size(), 2. / 12.);
+  m.landing.assign(m.points.size(), -1);
+  m.inputNode.assign(m.points.size(), -1);
+  for(std::size_t i = 0; i < m.points.size(); i++) m.origin.push_back((int)i);
+  for(std::size_t t = 0; t < m.triangles.size(); t++)
+    m.triangleOrigin.push_back((int)t);
+  std::vector<int> kept;
+  const std::size_t collapsed =
+    collapseShortEdges(m, in, onInput, false, 0.6, 0.08, &kept);
+  EXPECT_GT(collapsed, 10u);
+  EXPECT_EQ(m.points.size(), 169u - collapsed);
+  EXPECT_EQ(m.triangles.size(), 288u - 2 * collapsed);
+  EXPECT_EQ(m.origin.size(), m.points.size());
+  EXPECT_EQ(m.triangleOrigin.size(), m.triangles.size());
+  EXPECT_FALSE(kept.empty());
+  // every fixed (border) point is still there, where it was
+  std::vector<bool> left(before.size(), false);
+  for(std::size_t i = 0; i < m.points.size(); i++) {
+    ASSERT_GE(m.origin[i], 0);
+    EXPECT_FALSE(left[m.origin[i]]); // each origin once
+    left[m.origin[i]] = true;
+    if(!movable[m.origin[i]])
+      EXPECT_EQ(m.points[i].distance(before[m.origin[i]]), 0.);
+    EXPECT_LT(onInput.closest(m.points[i]).distance, 1e-9);
+  }
+  for(std::size_t i = 0; i < before.size(); i++)
+    if(!movable[i]) EXPECT_TRUE(left[i]);
+  // a manifold: inner edges on two triangles, the border's 48 on one
+  std::map<std::pair<int, int>, int> uses;
+  for(const auto &t : m.triangles)
+    for(int k = 0; k < 3; k++)
+      uses[std::make_pair(std::min(t[k], t[(k + 1) % 3]),
+                          std::max(t[k], t[(k + 1) % 3]))]++;
+  std::size_t border = 0;
+  for(const auto &e : uses) {
+    EXPECT_LE(e.second, 2);
+    border += e.second == 1;
+  }
+  EXPECT_EQ(border, 48u);
+  EXPECT_EQ(againstCount(m, in, onInput), 0u);
+  // no edge longer than 1.4 times the size
+  for(const auto &e : uses)
+    EXPECT_LE(m.points[e.first.first].distance(m.points[e.first.second]),
+              1.4 * 2. / 12. + 1e-12);
 }
