@@ -263,7 +263,7 @@ std::string poorTrianglesLine(const std::vector<faceReport> &reports)
   for(int c = 0; c < numPoorTriangleCauses; c++) {
     if(!t.poorTriangles[c]) continue;
     line += std::string(first ? " " : ", ") +
-            std::to_string(t.poorTriangles[c]) + " at " +
+            std::to_string(t.poorTriangles[c]) + " " +
             poorTriangleCauseName((poorTriangleCause)c);
     first = false;
   }

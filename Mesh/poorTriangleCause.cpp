@@ -41,10 +41,10 @@ const char *poorTriangleCauseName(poorTriangleCause c)
 {
   switch(c) {
   case poorTriangleCause::sharpCurveAngle:
-    return "curves meeting at a sharp angle";
-  case poorTriangleCause::shortCurveSegment: return "short curve segments";
+    return "where curves meet at a sharp angle";
+  case poorTriangleCause::shortCurveSegment: return "on short curve segments";
   case poorTriangleCause::narrowStrip:
-    return "strips narrower than the mesh size";
-  default: return "folds inside surfaces";
+    return "in strips narrower than the mesh size";
+  default: return "inside surfaces";
   }
 }

@@ -36,8 +36,8 @@ const int numPoorTriangleCauses = 4;
 // The first cause of the list above that applies to t
 poorTriangleCause poorTriangleCauseOf(const triangleCorners &t);
 
-// "curves meeting at a sharp angle", "short curve segments", "strips
-// narrower than the mesh size", "folds inside surfaces"
+// "where curves meet at a sharp angle", "on short curve segments", "in
+// strips narrower than the mesh size", "inside surfaces"
 const char *poorTriangleCauseName(poorTriangleCause c);
 
 #endif

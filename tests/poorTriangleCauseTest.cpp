@@ -53,5 +53,5 @@ TEST(poorTriangleCause, eachCause)
   EXPECT_EQ(poorTriangleCauseOf(corners(u, v, w, 1, 1, 1, true, false, false)),
             poorTriangleCause::narrowStrip);
   EXPECT_STREQ(poorTriangleCauseName(poorTriangleCause::narrowStrip),
-               "strips narrower than the mesh size");
+               "in strips narrower than the mesh size");
 }

@@ -105,8 +105,8 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   reports[1].poorTriangles[(int)poorTriangleCause::sharpCurveAngle] = 1;
   reports[1].poorTriangles[(int)poorTriangleCause::inside] = 1;
   EXPECT_EQ(poorTrianglesLine(reports),
-            "4 triangles below kappa 0.3: 3 at curves meeting at a sharp "
-            "angle, 1 at folds inside surfaces");
+            "4 triangles below kappa 0.3: 3 where curves meet at a sharp "
+            "angle, 1 inside surfaces");
   const std::string causes = reportJson(reports);
   EXPECT_TRUE(has(causes.substr(causes.find("\"total\"")),
                   "\"poorTriangleCauses\": {\"sharpCurveAngle\": 3, "
