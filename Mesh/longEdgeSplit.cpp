@@ -29,6 +29,9 @@ std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
   if(longEdges.empty()) return 0;
   std::sort(longEdges.rbegin(), longEdges.rend());
   triangleSplitter split(m, input, onInput, reversed);
+  // no new triangle below the worst one already there (0.5 at most): across
+  // a strip narrower than the size the halves would be slivers
+  const double floor = std::min(0.5, worstKappa(m));
   std::size_t splits = 0;
   for(const auto &e : longEdges) {
     const int t = std::get<1>(e), k = std::get<2>(e);
@@ -37,7 +40,7 @@ std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
     const closestTriangleHit hit =
       onInput.closest((m.points[a] + m.points[b]) * 0.5);
     if(hit.triangle < 0) continue;
-    splits += split.splitEdge(t, k, hit.point, true, -1);
+    splits += split.splitEdge(t, k, hit.point, true, -1, floor);
   }
   return splits;
 }

@@ -20,8 +20,10 @@ struct surfaceMesh;
 // Splits the inner edges of m (not locked) longer than `ratio` times the
 // mean of optimizableMesh::size at their ends, longest first, at most one
 // per triangle and its neighbours, where no new triangle points against the
-// input (reversed: m's triangles turn against the input's); the new nodes
-// are movable. Returns how many (0 if m has no sizes)
+// input (reversed: m's triangles turn against the input's) nor is worse than
+// the worst triangle of m (or 0.5) and the two it replaces (an edge across a
+// strip narrower than the size stays): splits do not lower m's worst kappa;
+// the new nodes are movable. Returns how many (0 if m has no sizes)
 std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
                            const closestTriangleSearch &onInput, bool reversed,
                            double ratio);

@@ -6,6 +6,7 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "surfaceMeshOptimizer.h"
+#include "triangleQuality.h"
 #include "triangleSplit.h"
 
 void triangleBarycentric(const SPoint3 &p, const SPoint3 &a, const SPoint3 &b,
@@ -59,8 +60,21 @@ bool triangleSplitter::against(const std::array<int, 3> &t,
 // node x) if none of `in` points against the input
 bool triangleSplitter::apply(const std::vector<int> &out,
                              const std::vector<std::array<int, 3> > &in,
-                             const SPoint3 &x, bool movable, int inputNode)
+                             const SPoint3 &x, bool movable, int inputNode,
+                             double floor)
 {
+  if(floor > 0.) {
+    auto kappaOf = [&](const std::array<int, 3> &t) {
+      SPoint3 c[3];
+      for(int k = 0; k < 3; k++)
+        c[k] = t[k] < (int)_m.points.size() ? _m.points[t[k]] : x;
+      return triangleKappa(c[0], c[1], c[2]);
+    };
+    double before = 1., after = 1.;
+    for(int t : out) before = std::min(before, kappaOf(_m.triangles[t]));
+    for(const std::array<int, 3> &t : in) after = std::min(after, kappaOf(t));
+    if(after < std::min(before, floor)) return false;
+  }
   for(const std::array<int, 3> &t : in)
     if(against(t, x)) return false;
   // the triangles around `out` (untouched until now, so the edge map still
@@ -106,7 +120,7 @@ bool triangleSplitter::splitTriangle(int t, const SPoint3 &x, bool movable,
 }
 
 bool triangleSplitter::splitEdge(int t, int k, const SPoint3 &x, bool movable,
-                                 int inputNode)
+                                 int inputNode, double floor)
 {
   if(_touched[t]) return false;
   const std::array<int, 3> c = _m.triangles[t];
@@ -123,5 +137,5 @@ bool triangleSplitter::splitEdge(int t, int k, const SPoint3 &x, bool movable,
   const int n = (int)_m.points.size();
   // (a, b, p) and (b, a, q) become (a, n, p), (n, b, p), (b, n, q), (n, a, q)
   return apply({t, s}, {{{a, n, p}}, {{n, b, p}}, {{b, n, q}}, {{n, a, q}}},
-               x, movable, inputNode);
+               x, movable, inputNode, floor);
 }

@@ -28,8 +28,10 @@ public:
   // triangle t; false if refused
   bool splitTriangle(int t, const SPoint3 &x, bool movable, int inputNode);
   // x inserted onto edge k of triangle t (corners k, k + 1), which must be
-  // an inner edge, not locked
-  bool splitEdge(int t, int k, const SPoint3 &x, bool movable, int inputNode);
+  // an inner edge, not locked; with a floor, refused if the worst new
+  // triangle is below both the floor and the worst old one
+  bool splitEdge(int t, int k, const SPoint3 &x, bool movable, int inputNode,
+                 double floor = -1.);
   // whether t may still change this round
   bool untouched(int t) const { return !_touched[t]; }
   // the triangles on edge (a, b) at the start of the round
@@ -45,7 +47,7 @@ private:
   bool against(const std::array<int, 3> &t, const SPoint3 &x) const;
   bool apply(const std::vector<int> &out,
              const std::vector<std::array<int, 3> > &in, const SPoint3 &x,
-             bool movable, int inputNode);
+             bool movable, int inputNode, double floor = -1.);
 };
 
 // Barycentric coordinates of the point of triangle (a, b, c) closest to p
