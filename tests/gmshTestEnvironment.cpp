@@ -102,7 +102,7 @@ int addDiscreteSurface(const testTriangulation &t)
 }
 
 std::vector<std::string> remeshWithRecipe(const testTriangulation &t,
-                                          double size)
+                                          double size, double featureAngle)
 {
   gmsh::clear();
   gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
@@ -110,7 +110,8 @@ std::vector<std::string> remeshWithRecipe(const testTriangulation &t,
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   addDiscreteSurface(t);
   gmsh::logger::start();
-  gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
+  gmsh::model::mesh::classifySurfaces(featureAngle * M_PI / 180, true, true,
+                                      M_PI);
   gmsh::model::mesh::createGeometry();
   gmsh::model::mesh::generate(2);
   std::vector<std::string> log;

@@ -42,10 +42,11 @@ std::string tutorialFile(const std::string &name);
 int addDiscreteSurface(const testTriangulation &t);
 
 // The STL recipe on t in a cleared model: the automatic map, a uniform
-// size, ClassifySurfaces{40 deg, 1, 1, 180 deg}, CreateGeometry, Mesh 2;
-// returns the log. The size options are reset after.
+// size, ClassifySurfaces{featureAngle (degrees), 1, 1, 180 deg},
+// CreateGeometry, Mesh 2; returns the log. The size options are reset after.
 std::vector<std::string> remeshWithRecipe(const testTriangulation &t,
-                                          double size);
+                                          double size,
+                                          double featureAngle = 40.);
 
 // The surfaces of the current model without any element
 std::vector<int> surfacesWithoutElements();

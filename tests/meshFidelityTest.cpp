@@ -9,14 +9,6 @@
 
 namespace {
 
-  surfaceMesh asSurfaceMesh(const testTriangulation &t)
-  {
-    surfaceMesh m;
-    m.points = t.points;
-    m.triangles = t.triangles;
-    return m;
-  }
-
   double bruteForceDistance(const testTriangulation &t, const SPoint3 &p)
   {
     double best = 1e300;

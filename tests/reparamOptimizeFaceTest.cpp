@@ -32,21 +32,9 @@ namespace {
   remeshed remesh(const testTriangulation &t, double size, int optimize,
                   double featureAngle = 40.)
   {
-    gmsh::clear();
     gmsh::option::setNumber("Mesh.CompoundOptimize", optimize);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", size);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
-    addDiscreteSurface(t);
-    gmsh::logger::start();
-    gmsh::model::mesh::classifySurfaces(featureAngle * M_PI / 180, true, true,
-                                        M_PI);
-    gmsh::model::mesh::createGeometry();
-    gmsh::model::mesh::generate(2);
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
-    gmsh::logger::stop();
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+    const std::vector<std::string> log =
+      remeshWithRecipe(t, size, featureAngle);
     gmsh::option::setNumber("Mesh.CompoundOptimize", 1);
     remeshed r;
     for(const std::string &line : log)

@@ -17,14 +17,6 @@
 
 namespace {
 
-  surfaceMesh asSurfaceMesh(const testTriangulation &t)
-  {
-    surfaceMesh m;
-    m.points = t.points;
-    m.triangles = t.triangles;
-    return m;
-  }
-
   // t to optimize: nodes off the border movable
   optimizableMesh optimizable(const testTriangulation &t)
   {

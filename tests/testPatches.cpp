@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include "meshFidelity.h"
 #include "testPatches.h"
 #include "triangleQuality.h"
 
@@ -268,4 +269,12 @@ testTriangulation sphere(int nLongitude, int nLatitude)
                 std::sin(theta) * std::sin(phi), -std::cos(theta));
   }
   return weld(t, 1e-9);
+}
+
+surfaceMesh asSurfaceMesh(const testTriangulation &t)
+{
+  surfaceMesh m;
+  m.points = t.points;
+  m.triangles = t.triangles;
+  return m;
 }

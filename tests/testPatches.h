@@ -77,6 +77,10 @@ testTriangulation sphere(int nLongitude, int nLatitude);
 
 discretePatch makePatchOrDie(const testTriangulation &t);
 
+// t as the meshes the fidelity measures and the optimizer take
+struct surfaceMesh;
+surfaceMesh asSurfaceMesh(const testTriangulation &t);
+
 // Twice the signed area of triangle t in the uv plane (uv: 2 values per node)
 double uvArea2(const std::vector<double> &uv, const std::array<int, 3> &t);
 

@@ -9,13 +9,20 @@
 //   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 0   (Gmsh's own)
 //   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 5   (spectral)
 //   gmsh t1_remesh_stl.geo -2 -setnumber FillHoles 0  (holes left free)
+//   gmsh t1_remesh_stl.geo -2 -setnumber Optimize 0   (planar mesh as is)
 //
 // Maps 1 to 3 put the outer boundary on the unit circle; maps 4 and 5 leave
 // it free (conformal). The two holes are filled on their mean plane before
 // mapping (Mesh.CompoundFillHoles) and stay holes in the new mesh.
 //
-// The log has one "Reparam:" line per parametrization (stage times) and one
-// per meshed surface (triangles, kappa min and mean).
+// After the planar mesher, the new mesh is optimized on the input
+// (Mesh.CompoundOptimize: input nodes it cuts off inserted, long edges split,
+// flips and node moves around its poor triangles; 2 also collapses short
+// edges).
+//
+// The log has one "Reparam:" line per parametrization (stage times), one per
+// meshed surface (triangles, kappa min and mean) and one on the optimization
+// (kappa min before and after).
 
 DefineConstant[
   Parametrization = {3, Choices{0 = "Gmsh built-in", 1 = "FE harmonic",
@@ -24,6 +31,9 @@ DefineConstant[
                                 6 = "Automatic"},
                      Name "Reparam/Parametrization"}
   FillHoles = {1, Choices{0, 1}, Name "Reparam/Fill holes"}
+  Optimize = {1, Choices{0 = "None", 1 = "On the input",
+                         2 = "On the input, short edges collapsed"},
+              Name "Reparam/Optimize"}
   Size = {0.05, Min 0.005, Max 0.5, Step 0.005,
               Name "Reparam/Mesh size"}
 ];
@@ -34,6 +44,7 @@ Merge "dome.stl";
 // computes the parametrizations
 Mesh.CompoundParametrization = Parametrization;
 Mesh.CompoundFillHoles = FillHoles;
+Mesh.CompoundOptimize = Optimize;
 
 // Split the triangulation where the angle between triangles exceeds 40
 // degrees, keep the boundary, and make every patch parametrizable (1)
