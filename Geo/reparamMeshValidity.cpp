@@ -47,8 +47,26 @@ namespace {
     std::size_t against = 0;
     for(MTriangle *t : gf->triangles) against += raw(t);
     const bool reversed = 2 * against > gf->triangles.size();
-    invertedRepair repair = splitInvertedTriangles(
-      gf, [&](MTriangle *t) { return raw(t) != reversed; });
+    // bounded: each pass searches the input under every triangle three
+    // times, and on a CAD input with huge triangles among tiny ones a search
+    // is slow (a mean value face of gmsh2x_king_ascii with 53 triangles
+    // against it: minutes); past the budget none counts as against, which
+    // ends the repair (the optimization after it counts again)
+    const std::size_t budget = 20 * gf->triangles.size() + 1000;
+    std::size_t used = 0;
+    invertedRepair repair =
+      splitInvertedTriangles(gf, [&](MTriangle *t) {
+        if(used >= budget) return false;
+        used++;
+        return raw(t) != reversed;
+      });
+    if(used >= budget) {
+      forgetOptimization(gf);
+      Msg::Info("Reparam: surface %d: repair of the triangles against the "
+                "input stopped after %lu searches",
+                gf->tag(), used);
+      return 0;
+    }
     // a mesh changed after its optimization is optimized again (in
     // discreteFace::mesh), with its own count of triangles against the input
     if(repair.changes || repair.moves) forgetOptimization(gf);

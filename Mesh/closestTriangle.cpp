@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ANN/ANN.h>
 #include "SVector3.h"
 #include "closestTriangle.h"
 
@@ -51,103 +50,90 @@ SPoint3 closestPointOnTriangle(const SPoint3 &p, const SPoint3 &a,
   return best;
 }
 
+namespace {
+
+  // The squared distance from p to the box [lo, hi] (0 inside)
+  double boxDistance2(const double *lo, const double *hi, const SPoint3 &p)
+  {
+    double d2 = 0.;
+    for(int k = 0; k < 3; k++) {
+      const double below = lo[k] - p[k], above = p[k] - hi[k];
+      const double d = std::max({below, above, 0.});
+      d2 += d * d;
+    }
+    return d2;
+  }
+
+  // Triangles per leaf: a few distances are cheaper than a level of boxes
+  const int leafSize = 4;
+
+} // namespace
+
 closestTriangleSearch::closestTriangleSearch(
   const std::vector<SPoint3> &points,
   const std::vector<std::array<int, 3> > &triangles)
   : _points(points), _triangles(triangles)
 {
   if(_triangles.empty()) return;
-  // Radius of a triangle around its centroid: the samples of a triangle
-  // subdivided m times are the centroids of its m^2 sub-triangles, each a
-  // copy of the triangle scaled by 1/m, so their radius is radius / m
-  std::vector<double> radius(_triangles.size());
-  double meanRadius = 0.;
-  for(std::size_t t = 0; t < _triangles.size(); t++) {
-    const SPoint3 &a = _points[_triangles[t][0]],
-                  &b = _points[_triangles[t][1]],
-                  &c = _points[_triangles[t][2]];
-    SPoint3 g = (a + b + c) * (1. / 3.);
-    radius[t] = std::max({g.distance(a), g.distance(b), g.distance(c)});
-    meanRadius += radius[t];
-  }
-  meanRadius /= _triangles.size();
-  // a cap on the subdivision bounds the memory: the few huge triangles
-  // among tiny ones (CAD STL) are measured at every query instead
-  const int maxSubdivision = 64;
-  std::vector<int> subdivision(_triangles.size(), 1);
-  double largest = 0.;
-  for(std::size_t t = 0; t < _triangles.size(); t++) {
-    if(meanRadius > 0. && radius[t] > maxSubdivision * meanRadius) {
-      subdivision[t] = 0;
-      _hugeTriangles.push_back((int)t);
-      continue;
-    }
-    if(meanRadius > 0. && radius[t] > meanRadius)
-      subdivision[t] = (int)std::ceil(radius[t] / meanRadius);
-    largest = std::max(largest, radius[t] / subdivision[t]);
-  }
-  // class k: sample radius in (largest / 4^(k+1), largest / 4^k]: few
-  // classes (each costs a search per query), far enough apart that the
-  // dense tiny triangles do not share the radius of the large ones
-  const int numClasses = 12;
-  auto classOf = [&](std::size_t t) {
-    const double r = radius[t] / subdivision[t];
-    if(!(r > 0.) || !(largest > 0.)) return numClasses - 1;
-    return std::min(numClasses - 1,
-                    (int)std::floor(std::log2(largest / r) / 2.));
-  };
-  std::vector<std::size_t> count(numClasses, 0);
+  _order.resize(_triangles.size());
+  for(std::size_t t = 0; t < _order.size(); t++) _order[t] = (int)t;
+  std::vector<SPoint3> centroids(_triangles.size());
   for(std::size_t t = 0; t < _triangles.size(); t++)
-    if(subdivision[t])
-      count[classOf(t)] += (std::size_t)subdivision[t] * subdivision[t];
-  std::vector<sampleClass *> byIndex(numClasses, nullptr);
-  for(int k = 0; k < numClasses; k++) {
-    if(!count[k]) continue;
-    _classes.emplace_back(new sampleClass);
-    byIndex[k] = _classes.back().get();
-    byIndex[k]->radius = largest / std::ldexp(1., 2 * k);
-    byIndex[k]->points = annAllocPts((int)count[k], 3);
-    byIndex[k]->triangle.reserve(count[k]);
-  }
-  for(std::size_t t = 0; t < _triangles.size(); t++) {
-    const int m = subdivision[t];
-    if(!m) continue;
-    sampleClass &c = *byIndex[classOf(t)];
-    const SPoint3 &a = _points[_triangles[t][0]],
-                  &b = _points[_triangles[t][1]],
-                  &p = _points[_triangles[t][2]];
-    auto addSample = [&](double v, double w) {
-      double *s = c.points[c.triangle.size()];
-      for(int k = 0; k < 3; k++)
-        s[k] = a[k] + v * (b[k] - a[k]) + w * (p[k] - a[k]);
-      c.triangle.push_back((int)t);
-    };
-    for(int i = 0; i < m; i++)
-      for(int j = 0; i + j < m; j++) {
-        // sub-triangle with the same orientation as the triangle...
-        addSample((i + 1. / 3.) / m, (j + 1. / 3.) / m);
-        // ... and the reversed one next to it
-        if(i + j < m - 1) addSample((i + 2. / 3.) / m, (j + 2. / 3.) / m);
+    centroids[t] = (_points[_triangles[t][0]] + _points[_triangles[t][1]] +
+                    _points[_triangles[t][2]]) *
+                   (1. / 3.);
+  _nodes.reserve(2 * _triangles.size() / leafSize + 2);
+  build(0, (int)_order.size(), centroids);
+}
+
+closestTriangleSearch::~closestTriangleSearch() {}
+
+// The node over _order[first, first + count): its box, then halves split at
+// the median centroid along the longest side of the centroids' box
+int closestTriangleSearch::build(int first, int count,
+                                 const std::vector<SPoint3> &centroids)
+{
+  const int index = (int)_nodes.size();
+  _nodes.push_back(boxNode());
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  double clo[3] = {1e300, 1e300, 1e300}, chi[3] = {-1e300, -1e300, -1e300};
+  for(int i = first; i < first + count; i++) {
+    const int t = _order[i];
+    for(int v : _triangles[t])
+      for(int k = 0; k < 3; k++) {
+        lo[k] = std::min(lo[k], _points[v][k]);
+        hi[k] = std::max(hi[k], _points[v][k]);
       }
+    for(int k = 0; k < 3; k++) {
+      clo[k] = std::min(clo[k], centroids[t][k]);
+      chi[k] = std::max(chi[k], centroids[t][k]);
+    }
   }
-  for(auto &c : _classes)
-    c->tree.reset(new ANNkd_tree(c->points, (int)c->triangle.size(), 3));
+  for(int k = 0; k < 3; k++) {
+    _nodes[index].lo[k] = lo[k];
+    _nodes[index].hi[k] = hi[k];
+  }
+  if(count <= leafSize) {
+    _nodes[index].first = first;
+    _nodes[index].count = count;
+    return index;
+  }
+  int axis = 0;
+  for(int k = 1; k < 3; k++)
+    if(chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
+  const int half = count / 2;
+  std::nth_element(_order.begin() + first, _order.begin() + first + half,
+                   _order.begin() + first + count, [&](int a, int b) {
+                     return centroids[a][axis] < centroids[b][axis];
+                   });
+  const int left = build(first, half, centroids);
+  const int right = build(first + half, count - half, centroids);
+  _nodes[index].left = left;
+  _nodes[index].right = right;
+  return index;
 }
 
-closestTriangleSearch::~closestTriangleSearch()
-{
-  for(auto &c : _classes) {
-    c->tree.reset();
-    annDeallocPts(c->points);
-  }
-}
-
-std::size_t closestTriangleSearch::numSamples() const
-{
-  std::size_t n = 0;
-  for(const auto &c : _classes) n += c->triangle.size();
-  return n;
-}
+std::size_t closestTriangleSearch::numBoxes() const { return _nodes.size(); }
 
 double closestTriangleSearch::distanceTo(int t, const SPoint3 &p,
                                          SPoint3 &closest) const
@@ -158,49 +144,44 @@ double closestTriangleSearch::distanceTo(int t, const SPoint3 &p,
   return p.distance(closest);
 }
 
-void closestTriangleSearch::closer(const SPoint3 &p, std::vector<int> &candidates,
-                                   closestTriangleHit &hit) const
-{
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()),
-                   candidates.end());
-  for(int t : candidates) {
-    if(t == hit.triangle) continue;
-    SPoint3 point;
-    double d = distanceTo(t, p, point);
-    if(hit.triangle < 0 || d < hit.distance) {
-      hit.triangle = t;
-      hit.distance = d;
-      hit.point = point;
-    }
-  }
-}
-
 closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p) const
 {
   closestTriangleHit hit;
-  std::vector<int> candidates = _hugeTriangles;
-  double q[3] = {p.x(), p.y(), p.z()};
-  // an upper bound: the triangles of the nearest samples of each class
-  for(const auto &c : _classes) {
-    const int k = std::min<int>(4, (int)c->triangle.size());
-    ANNidx nearest[4];
-    ANNdist squared[4];
-    c->tree->annkSearch(q, k, nearest, squared, 0.);
-    for(int i = 0; i < k; i++) candidates.push_back(c->triangle[nearest[i]]);
-  }
-  closer(p, candidates, hit);
-  // every triangle closer than the bound has a sample of its class within
-  // the bound plus the class radius
-  for(const auto &c : _classes) {
-    const double r = (hit.distance + c->radius) * (1. + 1e-12);
-    int count = c->tree->annkFRSearch(q, r * r, 0);
-    if(!count) continue;
-    std::vector<ANNidx> inside(count);
-    c->tree->annkFRSearch(q, r * r, count, inside.data(), nullptr, 0.);
-    candidates.clear();
-    for(ANNidx s : inside) candidates.push_back(c->triangle[s]);
-    closer(p, candidates, hit);
+  if(_nodes.empty()) return hit;
+  double best2 = 1e300;
+  // depth first, the nearer child first, boxes farther than the best
+  // distance skipped
+  std::vector<std::pair<double, int> > stack;
+  stack.reserve(64);
+  stack.push_back(std::make_pair(0., 0));
+  while(!stack.empty()) {
+    const std::pair<double, int> top = stack.back();
+    stack.pop_back();
+    if(top.first >= best2) continue;
+    const boxNode &n = _nodes[top.second];
+    if(n.count) {
+      for(int i = n.first; i < n.first + n.count; i++) {
+        SPoint3 point;
+        const double d = distanceTo(_order[i], p, point);
+        if(d * d < best2) {
+          best2 = d * d;
+          hit.triangle = _order[i];
+          hit.distance = d;
+          hit.point = point;
+        }
+      }
+      continue;
+    }
+    const double dl = boxDistance2(_nodes[n.left].lo, _nodes[n.left].hi, p);
+    const double dr = boxDistance2(_nodes[n.right].lo, _nodes[n.right].hi, p);
+    if(dl < dr) {
+      stack.push_back(std::make_pair(dr, n.right));
+      stack.push_back(std::make_pair(dl, n.left));
+    }
+    else {
+      stack.push_back(std::make_pair(dl, n.left));
+      stack.push_back(std::make_pair(dr, n.right));
+    }
   }
   return hit;
 }

@@ -25,21 +25,14 @@ struct closestTriangleHit {
   SPoint3 point;
 };
 
-class ANNkd_tree;
-
-// Exact closest triangle by kd-trees (ANN) over sample points of the
-// triangles: every point of a triangle lies within its samples' radius of
-// one of them, so the nearest sample gives an upper bound d and every
-// triangle closer than d has a sample within d + its samples' radius. Large
-// triangles get more samples (uniform subdivision), so that the radius stays
-// below the mean triangle size. The samples are kept in classes of radius
-// (a factor 4 apart from the largest), one tree each, so that a query
-// gathers within d + the class radius in each: one global radius made a
-// query among dense tiny triangles (CAD STL, slivers) gather thousands of
-// samples (41 s, now 29 s, for the report of a noisy 7436-triangle part;
-// halving classes: 26 s, but 30 % slower on scans). The few huge
-// triangles among tiny ones (over 64 times the mean size) are not sampled
-// but measured at every query.
+// Exact closest triangle by a bounding-box tree over the triangles (boxes
+// halved at the median centroid along their longest side, four triangles a
+// leaf), searched depth first, nearer box first, skipping the boxes farther
+// than the best distance found. It replaced kd-trees (ANN) over sample
+// points of the triangles, whose search gathered every sample within the
+// best distance: for a query off the surface among tiny triangles (the
+// halfway points of a mesh triangle across a fold of a CAD STL) thousands of
+// them, so that one face of gmsh2x_king_ascii took a minute.
 class closestTriangleSearch {
 public:
   closestTriangleSearch(const std::vector<SPoint3> &points,
@@ -50,23 +43,21 @@ public:
 
   // triangle -1 if the surface has no triangle
   closestTriangleHit closest(const SPoint3 &p) const;
-  std::size_t numSamples() const;
+  // the boxes of the tree
+  std::size_t numBoxes() const;
 
 private:
-  struct sampleClass {
-    double radius = 0.; // of every sample of the class, at most
-    std::vector<int> triangle; // of each sample
-    double **points = nullptr; // ANN's point array
-    std::unique_ptr<ANNkd_tree> tree;
+  struct boxNode {
+    double lo[3], hi[3];
+    int left = -1, right = -1; // children (inner nodes)
+    int first = 0, count = 0; // triangles _order[first, first + count)
   };
   std::vector<SPoint3> _points;
   std::vector<std::array<int, 3> > _triangles;
-  std::vector<std::unique_ptr<sampleClass> > _classes;
-  std::vector<int> _hugeTriangles; // not sampled: measured at every query
+  std::vector<boxNode> _nodes;
+  std::vector<int> _order;
+  int build(int first, int count, const std::vector<SPoint3> &centroids);
   double distanceTo(int t, const SPoint3 &p, SPoint3 &closest) const;
-  // keeps in hit the closest of hit and the triangles in `candidates`
-  void closer(const SPoint3 &p, std::vector<int> &candidates,
-              closestTriangleHit &hit) const;
 };
 
 #endif

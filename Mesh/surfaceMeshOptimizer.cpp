@@ -31,9 +31,10 @@ namespace {
   public:
     optimizer(optimizableMesh &m, const surfaceMesh &input,
               const closestTriangleSearch &onInput,
-              const meshOptimizationOptions &o)
+              const meshOptimizationOptions &o, std::size_t &searches,
+              std::size_t budget)
       : _m(m), _input(input), _onInput(onInput), _o(o),
-        _around(m.points.size())
+        _around(m.points.size()), _searches(searches), _budget(budget)
     {
       for(std::size_t t = 0; t < m.triangles.size(); t++)
         for(int v : m.triangles[t]) _around[v].push_back((int)t);
@@ -65,6 +66,7 @@ namespace {
 
     bool tryFlips(int t);
     bool tryMove(int v);
+    bool spent() const { return _searches >= _budget; }
     void addNeighbours(int v, std::set<int> &to) const
     {
       to.insert(v);
@@ -80,6 +82,11 @@ namespace {
     std::vector<std::vector<int> > _around; // triangles around each point
     // points whose surroundings changed since a move of them was refused
     std::vector<bool> _dirty;
+    // searches of the input made and allowed: on CAD inputs with huge
+    // triangles among tiny ones a search costs much more, and a face with
+    // many triangles it cannot better must not hold the mesher
+    std::size_t &_searches;
+    const std::size_t _budget;
     void changedAround(int v)
     {
       for(int t : _around[v])
@@ -88,10 +95,12 @@ namespace {
 
     bool against(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c) const
     {
+      _searches += 4;
       return triangleAgainstInput(a, b, c, _input, _onInput) != _o.reversed;
     }
     double distanceToInput(const SPoint3 &p) const
     {
+      _searches++;
       return _onInput.closest(p).distance;
     }
     // The triangle other than t on edge (a, b), -1 if none or several
@@ -127,6 +136,7 @@ namespace {
   // Edge k of t (corners k, k + 1) flipped if both new triangles are better
   bool optimizer::tryFlip(int t, int k)
   {
+    if(spent()) return false;
     const int a = _m.triangles[t][k], b = _m.triangles[t][(k + 1) % 3];
     const int p = _m.triangles[t][(k + 2) % 3];
     if(_m.lockedEdges.count(std::make_pair(std::min(a, b), std::max(a, b))))
@@ -222,6 +232,7 @@ namespace {
   // positions that would be better)
   bool optimizer::tryMove(int v)
   {
+    if(spent()) return false;
     if(!_m.movable[v] || _around[v].empty() || !_dirty[v]) return false;
     _dirty[v] = false; // until something around it changes
     SPoint3 centroid(0., 0., 0.);
@@ -291,7 +302,8 @@ namespace {
                             meshOptimizationResult &r,
                             const std::vector<int> &smooth)
   {
-    optimizer opt(m, input, onInput, o);
+    optimizer opt(m, input, onInput, o, r.searches,
+                  o.searchesPerTriangle * m.triangles.size() + 1000);
     // first the nodes around the edges collapsed: their triangles are valid
     // but uneven
     std::set<int> around;
@@ -314,7 +326,7 @@ namespace {
           changes++;
         }
       below = opt.trianglesBelowTarget();
-      if(!changes) break;
+      if(!changes || opt.spent()) break;
     }
   }
 

@@ -64,6 +64,9 @@ struct meshOptimizationOptions {
   // collapsed (Mesh/shortEdgeCollapse.h; 0: none)
   double splitAbove = 1.6, collapseBelow = 0.;
   int maxInsertionRounds = 3;
+  // the flips and moves stop after this many searches of the input per
+  // triangle (with 1000 more), counted over all rounds
+  std::size_t searchesPerTriangle = 30;
 };
 
 struct meshOptimizationResult {
@@ -74,6 +77,7 @@ struct meshOptimizationResult {
   std::size_t inserted = 0; // input nodes
   std::size_t splits = 0; // long edges
   std::size_t collapses = 0; // short edges
+  std::size_t searches = 0; // of the input, by the flips and moves
 };
 
 // Optimizes m in place against the input triangulation `input` (searched by

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <set>
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
@@ -56,25 +57,60 @@ bool triangleSplitter::against(const std::array<int, 3> &t,
   return triangleAgainstInput(c[0], c[1], c[2], _input, _onInput) != _reversed;
 }
 
+// The worst kappa of triangles `in` (node index points.size() at x)
+double triangleSplitter::worstWith(const std::vector<std::array<int, 3> > &in,
+                                   const SPoint3 &x) const
+{
+  double worst = 1.;
+  for(const std::array<int, 3> &t : in) {
+    SPoint3 c[3];
+    for(int k = 0; k < 3; k++)
+      c[k] = t[k] < (int)_m.points.size() ? _m.points[t[k]] : x;
+    worst = std::min(worst, triangleKappa(c[0], c[1], c[2]));
+  }
+  return worst;
+}
+
+// Whether the new node at x, or (movable) at the input point closest to the
+// centroid of the corners around it (x then moved there), leaves no new
+// triangle below both the floor and the worst old one: the midpoint of an
+// edge across a strip makes slivers that the centroid of the four corners
+// does not
+bool triangleSplitter::placeAboveFloor(
+  const std::vector<int> &out, const std::vector<std::array<int, 3> > &in,
+  bool movable, double floor, SPoint3 &x) const
+{
+  double before = 1.;
+  for(int t : out) {
+    const std::array<int, 3> &c = _m.triangles[t];
+    before = std::min(before, triangleKappa(_m.points[c[0]], _m.points[c[1]],
+                                            _m.points[c[2]]));
+  }
+  const double least = std::min(before, floor);
+  if(worstWith(in, x) >= least) return true;
+  if(!movable) return false;
+  std::set<int> corners;
+  for(int t : out)
+    for(int v : _m.triangles[t]) corners.insert(v);
+  SPoint3 centroid(0., 0., 0.);
+  for(int v : corners) centroid += _m.points[v];
+  centroid *= 1. / corners.size();
+  const closestTriangleHit hit = _onInput.closest(centroid);
+  if(hit.triangle < 0 || worstWith(in, hit.point) < least) return false;
+  x = hit.point;
+  return true;
+}
+
 // Replaces the triangles `out` by `in` (node index points.size() is the new
-// node x) if none of `in` points against the input
+// node, at onEdge or where placeAboveFloor moves it) if none of `in` points
+// against the input
 bool triangleSplitter::apply(const std::vector<int> &out,
                              const std::vector<std::array<int, 3> > &in,
-                             const SPoint3 &x, bool movable, int inputNode,
-                             double floor)
+                             const SPoint3 &onEdge, bool movable,
+                             int inputNode, double floor)
 {
-  if(floor > 0.) {
-    auto kappaOf = [&](const std::array<int, 3> &t) {
-      SPoint3 c[3];
-      for(int k = 0; k < 3; k++)
-        c[k] = t[k] < (int)_m.points.size() ? _m.points[t[k]] : x;
-      return triangleKappa(c[0], c[1], c[2]);
-    };
-    double before = 1., after = 1.;
-    for(int t : out) before = std::min(before, kappaOf(_m.triangles[t]));
-    for(const std::array<int, 3> &t : in) after = std::min(after, kappaOf(t));
-    if(after < std::min(before, floor)) return false;
-  }
+  SPoint3 x = onEdge;
+  if(floor > 0. && !placeAboveFloor(out, in, movable, floor, x)) return false;
   for(const std::array<int, 3> &t : in)
     if(against(t, x)) return false;
   // the triangles around `out` (untouched until now, so the edge map still

@@ -10,6 +10,7 @@
 #ifndef TRIANGLE_SPLIT_H
 #define TRIANGLE_SPLIT_H
 
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
@@ -29,7 +30,8 @@ public:
   bool splitTriangle(int t, const SPoint3 &x, bool movable, int inputNode);
   // x inserted onto edge k of triangle t (corners k, k + 1), which must be
   // an inner edge, not locked; with a floor, refused if the worst new
-  // triangle is below both the floor and the worst old one
+  // triangle is below both the floor and the worst old one, unless a
+  // movable node at the centroid of the four corners (on the input) is not
   bool splitEdge(int t, int k, const SPoint3 &x, bool movable, int inputNode,
                  double floor = -1.);
   // whether t may still change this round
@@ -45,9 +47,15 @@ private:
   std::map<std::pair<int, int>, std::vector<int> > _edges;
   std::vector<bool> _touched;
   bool against(const std::array<int, 3> &t, const SPoint3 &x) const;
+  double worstWith(const std::vector<std::array<int, 3> > &in,
+                   const SPoint3 &x) const;
+  bool placeAboveFloor(const std::vector<int> &out,
+                       const std::vector<std::array<int, 3> > &in,
+                       bool movable, double floor, SPoint3 &x) const;
   bool apply(const std::vector<int> &out,
-             const std::vector<std::array<int, 3> > &in, const SPoint3 &x,
-             bool movable, int inputNode, double floor = -1.);
+             const std::vector<std::array<int, 3> > &in,
+             const SPoint3 &onEdge, bool movable, int inputNode,
+             double floor = -1.);
 };
 
 // Barycentric coordinates of the point of triangle (a, b, c) closest to p

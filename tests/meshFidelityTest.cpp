@@ -54,8 +54,8 @@ TEST(closestTriangle, pointOnTriangleByRegion)
 
 TEST(closestTriangle, searchEqualsBruteForce)
 {
-  // a hemisphere plus one huge triangle (subdivided for the samples) and a
-  // sliver: the search must stay exact everywhere
+  // a hemisphere plus one huge triangle and a sliver: the search must stay
+  // exact everywhere, also far off the surface
   testTriangulation t = hemisphere(12, 40);
   int n = (int)t.points.size();
   t.points.push_back(SPoint3(-30, -30, -2));
@@ -65,7 +65,9 @@ TEST(closestTriangle, searchEqualsBruteForce)
   t.triangles.push_back({{n, n + 1, n + 2}});
   t.triangles.push_back({{n + 3, 0, n + 3}});
   closestTriangleSearch search(t.points, t.triangles);
-  EXPECT_GT(search.numSamples(), t.triangles.size());
+  // a binary tree of leaves of up to four triangles
+  EXPECT_GE(search.numBoxes(), 2 * (t.triangles.size() / 4) - 1);
+  EXPECT_LT(search.numBoxes(), t.triangles.size());
   sequence s{7};
   for(int i = 0; i < 3000; i++) {
     SPoint3 p(8 * s.next() - 4, 8 * s.next() - 4, 6 * s.next() - 3);
