@@ -55,7 +55,21 @@ namespace {
     return 2 * cuts > polyline.size() - 1;
   }
 
+  // The input edges no mesh may cross: sharp (Gmsh's classification
+  // lines), border and non-manifold ones
+  std::set<edgeByCoordinates> &fixedEdges()
+  {
+    static std::set<edgeByCoordinates> edges;
+    return edges;
+  }
+
 } // namespace
+
+void reparamRecordFixedEdges(const std::vector<std::array<SPoint3, 2> > &edges)
+{
+  fixedEdges().clear();
+  for(const auto &e : edges) fixedEdges().insert(byCoordinates(e[0], e[1]));
+}
 
 void reparamRecordSmoothCuts(const std::vector<std::array<SPoint3, 2> > &edges)
 {
@@ -126,6 +140,17 @@ namespace {
   }
 
 } // namespace
+
+bool reparamIsCrossableCurve(GEdge *ge)
+{
+  std::vector<SPoint3> polyline;
+  if(ge->geomType() != GEntity::DiscreteCurve || !inputPolyline(ge, polyline))
+    return false;
+  for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+    if(fixedEdges().count(byCoordinates(polyline[i], polyline[i + 1])))
+      return false;
+  return true;
+}
 
 void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
 {

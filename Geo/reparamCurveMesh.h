@@ -23,6 +23,19 @@ class MVertex;
 void reparamRecordSmoothCuts(
   const std::vector<std::array<SPoint3, 2> > &edges);
 
+// The input edges of the last patch layout that no mesh may cross: its
+// sharp edges (Gmsh's classification lines), borders and non-manifold
+// edges (node pairs, by their coordinates)
+void reparamRecordFixedEdges(
+  const std::vector<std::array<SPoint3, 2> > &edges);
+
+// Whether discrete curve ge runs along none of those edges: a cut of the
+// layout across a smooth part of the surface, that the mesh may cross once
+// the faces are meshed (Geo/reparamOptimizeAcrossCuts.h). It is not always
+// the layout's own cut: Gmsh's classification may end the patches a
+// triangle off it
+bool reparamIsCrossableCurve(GEdge *ge);
+
 // nodes: the curve's mesh nodes without its end points, in order along it.
 // Does nothing unless ge is a discrete curve, Reparam computes the
 // parametrizations (Mesh.CompoundParametrization > 0) and

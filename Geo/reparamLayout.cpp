@@ -192,7 +192,8 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
 namespace {
 
   // The cuts of the layout that are no sharp edge, boundary nor
-  // non-manifold edge: the curve meshes leave their turns alone
+  // non-manifold edge: the curve meshes leave their turns alone; and those
+  // edges, that the optimization across cuts keeps
   void recordSmoothCuts(const modelTriangulation &model,
                         const layoutResult &layout)
   {
@@ -201,7 +202,15 @@ namespace {
       sharp.insert({{std::min(e[0], e[1]), std::max(e[0], e[1])}});
     const triangleAdjacency adjacency =
       makeTriangleAdjacency(model.mesh.triangles);
-    std::vector<std::array<SPoint3, 2> > smooth;
+    std::vector<std::array<SPoint3, 2> > smooth, fixed;
+    for(const auto &e : model.mesh.featureEdges)
+      fixed.push_back({{model.mesh.points[e[0]], model.mesh.points[e[1]]}});
+    for(std::size_t edge = 0; edge < adjacency.edges.size(); edge++)
+      if(adjacency.numTriangles((int)edge) != 2) {
+        const std::array<int, 2> &e = adjacency.edges[edge];
+        fixed.push_back({{model.mesh.points[e[0]], model.mesh.points[e[1]]}});
+      }
+    reparamRecordFixedEdges(fixed);
     for(const auto &e : layout.cutEdges) {
       const std::array<int, 2> key = {{std::min(e[0], e[1]), std::max(e[0], e[1])}};
       const int edge = adjacency.find(key[0], key[1]);

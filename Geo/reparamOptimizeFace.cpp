@@ -2,74 +2,20 @@
 
 #include <algorithm>
 #include <set>
-#include <unordered_map>
-#include "GEdge.h"
 #include "GFace.h"
-#include "BackgroundMeshTools.h"
 #include "GmshMessage.h"
-#include "MLine.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "reparamOptimizableMesh.h"
 #include "reparamOptimizeFace.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "surfaceMeshOptimizer.h"
 
 namespace {
-
-  // gf's triangles as an optimizableMesh; nodes[i] is point i's node
-  optimizableMesh meshOfFace(GFace *gf, std::vector<MVertex *> &nodes)
-  {
-    optimizableMesh m;
-    std::unordered_map<MVertex *, int> index;
-    auto indexOf = [&](MVertex *v) {
-      auto it = index.find(v);
-      if(it != index.end()) return it->second;
-      const int i = (int)nodes.size();
-      index[v] = i;
-      nodes.push_back(v);
-      m.points.push_back(v->point());
-      // only the face's own nodes move: curves and points stay
-      m.movable.push_back(v->onWhat() == gf);
-      // the size asked (Mesh.MeshSize*, fields) where it is
-      SPoint2 uv;
-      reparamMeshVertexOnFace(v, gf, uv);
-      m.size.push_back(
-        BGM_MeshSize(gf, uv.x(), uv.y(), v->x(), v->y(), v->z()));
-      return i;
-    };
-    for(MTriangle *t : gf->triangles)
-      m.triangles.push_back({{indexOf(t->getVertex(0)),
-                              indexOf(t->getVertex(1)),
-                              indexOf(t->getVertex(2))}});
-    // curves inside the face (creases kept): their edges stay
-    for(GEdge *ge : gf->embeddedEdges())
-      for(MLine *l : ge->lines) {
-        auto a = index.find(l->getVertex(0)), b = index.find(l->getVertex(1));
-        if(a == index.end() || b == index.end()) continue;
-        m.lockedEdges.insert(std::make_pair(std::min(a->second, b->second),
-                                            std::max(a->second, b->second)));
-      }
-    return m;
-  }
-
-  // Whether most triangles of m turn against the input (counted on at most
-  // about a hundred of them: the planar mesh is consistently oriented)
-  bool reversedOnInput(const optimizableMesh &m, const surfaceMesh &input,
-                       const closestTriangleSearch &onInput)
-  {
-    const std::size_t step = m.triangles.size() / 101 + 1;
-    std::size_t against = 0, tested = 0;
-    for(std::size_t i = 0; i < m.triangles.size(); i += step, tested++) {
-      const std::array<int, 3> &t = m.triangles[i];
-      against += triangleAgainstInput(m.points[t[0]], m.points[t[1]],
-                                      m.points[t[2]], input, onInput);
-    }
-    return 2 * against > tested;
-  }
 
   // The (u, v) of point p of gf's input, as gf's parametric interface
   // knows it: Gmsh replaces the map of a planar face by coordinates on its
@@ -154,12 +100,16 @@ bool reparamOptimizeMeshedFace(GFace *gf)
      findOptimization(gf))
     return false;
   const double t0 = TimeOfDay();
+  // only the face's own nodes move: curves and points stay
   std::vector<MVertex *> nodes;
-  optimizableMesh m = meshOfFace(gf, nodes);
+  std::vector<int> triangleFace;
+  optimizableMesh m = optimizableMeshOf(
+    {gf}, {}, [gf](const MVertex *v) { return v->onWhat() == gf; }, {}, nodes,
+    triangleFace);
   const surfaceMesh input = inputTriangulationOf(gf);
   const closestTriangleSearch onInput(input.points, input.triangles);
   meshOptimizationOptions o;
-  o.reversed = reversedOnInput(m, input, onInput);
+  o.reversed = meshReversedOnInput(gf, input, onInput);
   // 2: coarsen too where the curves' short segments made the mesh finer
   // than asked (fewer triangles, edges closer to the size; slower)
   o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;

@@ -52,6 +52,9 @@ struct optimizationRecord {
   std::size_t inserted = 0, splits = 0, collapses = 0, flips = 0, moves = 0;
   std::size_t againstBefore = 0, againstAfter = 0;
   bool reversed = false; // the mesh turns against the input (most of it)
+  // made by the optimization of the faces a patch was cut into, together
+  // (Geo/reparamOptimizeAcrossCuts.h)
+  bool acrossCuts = false;
   // the mesh it left, to tell whether it is still gf's
   std::size_t elements = 0;
   const MElement *firstElement = nullptr;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "SVector3.h"
 #include "closestTriangle.h"
 #include "farInputNodes.h"
 #include "longEdgeSplit.h"
@@ -108,6 +109,7 @@ namespace {
     bool tryFlip(int t, int k);
     void replaceCorner(int t, int from, int to);
     std::pair<double, double> ringKappa(int v, const SPoint3 &at) const;
+    SPoint3 worstTriangleApex(int v) const;
     double ringFarthest(int v, const SPoint3 &at, bool &valid) const;
   };
 
@@ -209,6 +211,40 @@ namespace {
     return std::make_pair(worst, sum / _around[v].size());
   }
 
+  // Where v makes the worst triangle around it equilateral: over the
+  // middle of the opposite edge, across it from nothing, in the plane of
+  // the ring (the mean of its triangles' normals, as oriented)
+  SPoint3 optimizer::worstTriangleApex(int v) const
+  {
+    const std::vector<SPoint3> &x = _m.points;
+    SVector3 normal(0., 0., 0.);
+    int worst = -1;
+    double worstKappa = 2.;
+    for(int t : _around[v]) {
+      const std::array<int, 3> &c = _m.triangles[t];
+      normal += crossprod(SVector3(x[c[0]], x[c[1]]), SVector3(x[c[0]], x[c[2]]));
+      const double k = kappa(t);
+      if(k < worstKappa) {
+        worstKappa = k;
+        worst = t;
+      }
+    }
+    if(worst < 0 || norm(normal) == 0.) return x[v];
+    normal.normalize();
+    // (v, a, b) in the triangle's order: v lies on the side n x (b - a)
+    const std::array<int, 3> &c = _m.triangles[worst];
+    int k = 0;
+    while(c[k] != v) k++;
+    const SPoint3 &a = x[c[(k + 1) % 3]], &b = x[c[(k + 2) % 3]];
+    SVector3 side = crossprod(normal, SVector3(a, b));
+    if(norm(side) == 0.) return x[v];
+    side.normalize();
+    side *= 0.5 * std::sqrt(3.) * a.distance(b);
+    const SPoint3 middle = (a + b) * 0.5;
+    return SPoint3(middle.x() + side.x(), middle.y() + side.y(),
+                   middle.z() + side.z());
+  }
+
   // The largest distance of the centroids of the triangles around v (v at
   // `at`) to the input, less the tolerance times their longest edge;
   // `valid`: none of them points against the input
@@ -222,7 +258,7 @@ namespace {
       if(against(c[0], c[1], c[2])) valid = false;
       farthest = std::max(farthest,
                           distanceToInput(centroidOf(c[0], c[1], c[2])) -
-                            _o.tolerance * longestEdge(c[0], c[1], c[2]));
+                            _o.moveTolerance * longestEdge(c[0], c[1], c[2]));
     }
     return farthest;
   }
@@ -250,10 +286,14 @@ namespace {
     // move that turns it back is better (signed quality)
     for(int t : _around[v])
       if(_m.against[t]) before.first = -1.;
+    // the centroid (Laplacian smoothing) evens the ring, the apex of the
+    // worst triangle lifts a cap (v near the middle of the opposite edge)
+    // that the centroid leaves: both, and halfway there
+    const SPoint3 apex = worstTriangleApex(v);
     std::vector<std::pair<double, closestTriangleHit> > better;
-    for(double step : {1., 0.5}) {
-      const closestTriangleHit hit =
-        _onInput.closest(here + (centroid - here) * step);
+    for(const SPoint3 &to :
+        {centroid, (here + centroid) * 0.5, apex, (here + apex) * 0.5}) {
+      const closestTriangleHit hit = _onInput.closest(to);
       if(hit.triangle < 0) continue;
       const std::pair<double, double> after = ringKappa(v, hit.point);
       if(after.first >= before.first + minimalGain ||

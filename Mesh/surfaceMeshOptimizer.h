@@ -54,6 +54,12 @@ struct meshOptimizationOptions {
   // how much farther from the input a change may take a triangle, as a share
   // of its longest edge (a flip across a crease of the input cuts it off)
   double tolerance = 0.02;
+  // the same for a node move (the node stays on the input: the centroids
+  // of the triangles around it move off a curved input by their sag, which
+  // grows as a sliver becomes a fat triangle of the same edges: with 0.02
+  // fertility's worst triangle stayed at kappa 0.31, with 0.1 it rose to
+  // 0.44 and its Hausdorff distance did not change)
+  double moveTolerance = 0.1;
   // the mesh's triangles turn against the input's (most of them do)
   bool reversed = false;
   // inner input nodes farther from the mesh than this share of the edges

@@ -1,0 +1,385 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+#include "GEdge.h"
+#include "GFace.h"
+#include "GModel.h"
+#include "GmshMessage.h"
+#include "MLine.h"
+#include "MTriangle.h"
+#include "MVertex.h"
+#include "OS.h"
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+#include "reparamCurveMesh.h"
+#include "reparamInputMesh.h"
+#include "reparamOptimizableMesh.h"
+#include "reparamOptimizeAcrossCuts.h"
+#include "reparamOptions.h"
+#include "reparamReport.h"
+
+namespace {
+
+  // A face whose triangles Reparam's optimizer may change
+  bool optimizable(GFace *gf)
+  {
+    const parametrizationRecord *map = findParametrization(gf);
+    return map && map->map > 0 &&
+           gf->geomType() == GEntity::DiscreteSurface &&
+           !gf->triangles.empty() && gf->quadrangles.empty() &&
+           !gf->stl_triangles.empty() && !keptAsInput(gf);
+  }
+
+  int rootOf(std::vector<int> &parent, int i)
+  {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+
+  // The inputs of the faces as one triangulation; inputFace[t]: the index in
+  // `faces` of input triangle t's face
+  surfaceMesh inputOfFaces(const std::vector<GFace *> &faces,
+                           std::vector<int> &inputFace)
+  {
+    surfaceMesh all;
+    inputFace.clear();
+    for(std::size_t f = 0; f < faces.size(); f++) {
+      const surfaceMesh one = inputTriangulationOf(faces[f]);
+      const int offset = (int)all.points.size();
+      all.points.insert(all.points.end(), one.points.begin(), one.points.end());
+      for(const std::array<int, 3> &t : one.triangles) {
+        all.triangles.push_back({{t[0] + offset, t[1] + offset, t[2] + offset}});
+        inputFace.push_back((int)f);
+      }
+    }
+    return all;
+  }
+
+  // Writes the optimized mesh of a group back into its faces and curves
+  class groupWriter {
+  public:
+    groupWriter(const cutGroup &g, const optimizableMesh &m,
+                const std::vector<MVertex *> &nodes,
+                const std::vector<int> &inputFace,
+                const closestTriangleSearch &onInput)
+      : _g(g), _m(m), _nodes(nodes), _inputFace(inputFace), _onInput(onInput)
+    {
+    }
+
+    // the face of each triangle of m, as written
+    std::vector<int> write()
+    {
+      const std::vector<MVertex *> out = writeNodes();
+      std::vector<int> triangleFace = writeTriangles(out);
+      dropCrossedCurves();
+      for(auto &e : _leaving) {
+        std::vector<MVertex *> &own = e.first->mesh_vertices;
+        own.erase(std::remove_if(
+                    own.begin(), own.end(),
+                    [&](MVertex *v) { return e.second.count(v) > 0; }),
+                  own.end());
+      }
+      for(MVertex *v : _gone) delete v;
+      return triangleFace;
+    }
+
+    std::size_t crossedCurves() const { return _crossed; }
+
+  private:
+    // the index in the group of the face whose input is under p (landing:
+    // the input triangle p was put on, -1 if unknown)
+    int faceAt(const SPoint3 &p, int landing) const
+    {
+      if(landing < 0) landing = _onInput.closest(p).triangle;
+      return landing < 0 ? 0 : _inputFace[landing];
+    }
+
+    MVertex *newFaceNode(const SPoint3 &p, GFace *gf)
+    {
+      const SPoint2 uv = gf->parFromPoint(p);
+      MVertex *v = new MFaceVertex(p.x(), p.y(), p.z(), gf, uv.x(), uv.y());
+      gf->mesh_vertices.push_back(v);
+      return v;
+    }
+
+    void leave(MVertex *v, bool destroy)
+    {
+      _leaving[v->onWhat()].insert(v);
+      if(destroy) _gone.insert(v);
+    }
+
+    std::vector<MVertex *> writeNodes()
+    {
+      std::vector<MVertex *> out(_m.points.size(), nullptr);
+      std::vector<bool> kept(_nodes.size(), false);
+      for(std::size_t i = 0; i < _m.points.size(); i++) {
+        const SPoint3 &p = _m.points[i];
+        const int origin = _m.origin[i];
+        if(origin >= 0) kept[origin] = true;
+        if(origin >= 0 && _m.landing[i] < 0) {
+          out[i] = _nodes[origin]; // not moved
+          continue;
+        }
+        GFace *gf = _g.faces[faceAt(p, _m.landing[i])];
+        if(origin < 0) {
+          out[i] = newFaceNode(p, gf);
+          continue;
+        }
+        MVertex *v = _nodes[origin];
+        if(v->onWhat()->dim() != 2) {
+          // a cut's node moved off it
+          out[i] = newFaceNode(p, gf);
+          leave(v, true);
+          continue;
+        }
+        if(v->onWhat() != gf) {
+          leave(v, false);
+          v->setEntity(gf);
+          gf->mesh_vertices.push_back(v);
+        }
+        const SPoint2 uv = gf->parFromPoint(p);
+        v->setXYZ(p.x(), p.y(), p.z());
+        v->setParameter(0, uv.x());
+        v->setParameter(1, uv.y());
+        out[i] = v;
+      }
+      // nodes collapsed away (only movable ones: of the faces or the cuts)
+      for(std::size_t i = 0; i < _nodes.size(); i++)
+        if(!kept[i]) leave(_nodes[i], true);
+      return out;
+    }
+
+    std::vector<int> writeTriangles(const std::vector<MVertex *> &out)
+    {
+      std::vector<MTriangle *> old;
+      for(GFace *gf : _g.faces)
+        old.insert(old.end(), gf->triangles.begin(), gf->triangles.end());
+      std::vector<bool> kept(old.size(), false);
+      std::vector<std::vector<MTriangle *> > byFace(_g.faces.size());
+      std::vector<int> triangleFace(_m.triangles.size(), 0);
+      for(std::size_t t = 0; t < _m.triangles.size(); t++) {
+        MVertex *c[3];
+        SPoint3 centroid(0., 0., 0.);
+        for(int k = 0; k < 3; k++) {
+          c[k] = out[_m.triangles[t][k]];
+          centroid += _m.points[_m.triangles[t][k]];
+        }
+        centroid *= 1. / 3.;
+        const int origin = _m.triangleOrigin[t];
+        MTriangle *tri = nullptr;
+        if(origin < 0)
+          tri = new MTriangle(c[0], c[1], c[2]);
+        else {
+          tri = old[origin];
+          kept[origin] = true;
+          for(int k = 0; k < 3; k++) tri->setVertex(k, c[k]);
+        }
+        triangleFace[t] = faceAt(centroid, -1);
+        byFace[triangleFace[t]].push_back(tri);
+        for(int k = 0; k < 3; k++) {
+          MVertex *a = c[k], *b = c[(k + 1) % 3];
+          _edges.insert(std::make_pair(std::min(a, b), std::max(a, b)));
+        }
+      }
+      for(std::size_t t = 0; t < old.size(); t++)
+        if(!kept[t]) delete old[t];
+      for(std::size_t f = 0; f < _g.faces.size(); f++)
+        _g.faces[f]->triangles = byFace[f];
+      return triangleFace;
+    }
+
+    // A cut whose segments are not all edges of the new mesh any more keeps
+    // no 1D element (its nodes the mesh still uses stay on it)
+    void dropCrossedCurves()
+    {
+      for(GEdge *ge : _g.cuts) {
+        bool followed = true;
+        for(MLine *l : ge->lines) {
+          MVertex *a = l->getVertex(0), *b = l->getVertex(1);
+          followed = followed && !_gone.count(a) && !_gone.count(b) &&
+                     _edges.count(std::make_pair(std::min(a, b),
+                                                 std::max(a, b)));
+        }
+        if(followed) continue;
+        for(MLine *l : ge->lines) delete l;
+        ge->lines.clear();
+        ge->deleteVertexArrays();
+        _crossed++;
+      }
+    }
+
+    const cutGroup &_g;
+    const optimizableMesh &_m;
+    const std::vector<MVertex *> &_nodes;
+    const std::vector<int> &_inputFace;
+    const closestTriangleSearch &_onInput;
+    std::map<GEntity *, std::set<MVertex *> > _leaving;
+    std::set<MVertex *> _gone;
+    std::set<std::pair<MVertex *, MVertex *> > _edges;
+    std::size_t _crossed = 0;
+  };
+
+  // The faces' optimization records and reports, for their new meshes: the
+  // group's counts go to its largest face, each face gets its own count of
+  // triangles against the input
+  void recordGroup(const cutGroup &g, const std::vector<optimizationRecord> &before,
+                   const meshOptimizationResult &r, const optimizableMesh &m,
+                   const std::vector<int> &triangleFace, double seconds)
+  {
+    std::vector<std::size_t> against(g.faces.size(), 0);
+    for(std::size_t t = 0; t < m.triangles.size(); t++)
+      against[triangleFace[t]] += m.against[t];
+    std::size_t largest = 0;
+    for(std::size_t f = 0; f < g.faces.size(); f++)
+      if(g.faces[f]->triangles.size() > g.faces[largest]->triangles.size())
+        largest = f;
+    for(std::size_t f = 0; f < g.faces.size(); f++) {
+      GFace *gf = g.faces[f];
+      optimizationRecord o = before[f];
+      if(!o.done) {
+        o.done = true;
+        o.kappaMinBefore = r.minBefore;
+      }
+      if(f == largest) {
+        o.seconds += seconds;
+        o.inserted += r.inserted;
+        o.splits += r.splits;
+        o.collapses += r.collapses;
+        o.flips += r.flips;
+        o.moves += r.moves;
+      }
+      o.againstAfter = against[f];
+      o.reversed = false;
+      o.acrossCuts = true;
+      o.elements = gf->getNumMeshElements();
+      o.firstElement = o.elements ? gf->getMeshElement(0) : nullptr;
+      recordOptimization(gf, o);
+      const faceReport *report = findFaceReport(gf);
+      const double meshTime = report ? report->meshTime : 0.;
+      reparamReportMeshedFace(gf, meshTime + (f == largest ? seconds : 0.));
+    }
+  }
+
+  std::string tagList(const std::vector<GFace *> &faces)
+  {
+    std::string list;
+    for(GFace *gf : faces)
+      list += (list.empty() ? "" : ", ") + std::to_string(gf->tag());
+    return list;
+  }
+
+  // Whether this group's meshes are those the optimization left
+  bool alreadyOptimized(const cutGroup &g)
+  {
+    for(GFace *gf : g.faces) {
+      const optimizationRecord *o = findOptimization(gf);
+      if(!o || !o->acrossCuts) return false;
+    }
+    return true;
+  }
+
+  bool optimizeGroup(const cutGroup &g)
+  {
+    const double t0 = TimeOfDay();
+    std::vector<int> inputFace;
+    const surfaceMesh input = inputOfFaces(g.faces, inputFace);
+    const closestTriangleSearch onInput(input.points, input.triangles);
+    // each face turned along the input (Gmsh orients them after this)
+    std::vector<bool> reverse;
+    std::vector<optimizationRecord> before;
+    for(GFace *gf : g.faces) {
+      reverse.push_back(meshReversedOnInput(gf, input, onInput));
+      const optimizationRecord *o = findOptimization(gf);
+      before.push_back(o ? *o : optimizationRecord());
+    }
+    std::set<GEdge *> cuts(g.cuts.begin(), g.cuts.end());
+    std::set<GEdge *> locked;
+    for(GFace *gf : g.faces)
+      for(GEdge *ge : gf->edges())
+        if(!cuts.count(ge)) locked.insert(ge);
+    std::set<GFace *> faces(g.faces.begin(), g.faces.end());
+    auto movable = [&](const MVertex *v) {
+      GEntity *e = v->onWhat();
+      return (e->dim() == 2 && faces.count((GFace *)e)) ||
+             (e->dim() == 1 && cuts.count((GEdge *)e));
+    };
+    std::vector<MVertex *> nodes;
+    std::vector<int> triangleFace;
+    optimizableMesh m = optimizableMeshOf(
+      g.faces, reverse, movable,
+      std::vector<GEdge *>(locked.begin(), locked.end()), nodes, triangleFace);
+    meshOptimizationOptions o;
+    o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;
+    const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);
+    if(!r.flips && !r.moves && !r.inserted && !r.splits && !r.collapses) {
+      Msg::Debug("Reparam: surfaces %s: nothing to change across their cuts",
+                 tagList(g.faces).c_str());
+      return false;
+    }
+    groupWriter writer(g, m, nodes, inputFace, onInput);
+    triangleFace = writer.write();
+    const double seconds = TimeOfDay() - t0;
+    recordGroup(g, before, r, m, triangleFace, seconds);
+    Msg::Info("Reparam: surfaces %s optimized across their %lu cut curves "
+              "(%lu crossed): kappa min %.3g -> %.3g, %lu -> %lu triangles "
+              "below %g, %lu -> %lu against the input; %lu long edges split, "
+              "%lu short ones collapsed, %lu flips and %lu node moves (%g s)",
+              tagList(g.faces).c_str(), g.cuts.size(), writer.crossedCurves(),
+              r.minBefore, r.minAfter, r.belowBefore, r.belowAfter, o.target,
+              r.againstBefore, r.againstAfter, r.splits, r.collapses, r.flips,
+              r.moves, seconds);
+    return true;
+  }
+
+} // namespace
+
+std::vector<cutGroup> facesJoinedByCuts(GModel *m)
+{
+  std::vector<GFace *> faces;
+  std::map<GFace *, int> index;
+  for(auto it = m->firstFace(); it != m->lastFace(); ++it)
+    if(optimizable(*it)) {
+      index[*it] = (int)faces.size();
+      faces.push_back(*it);
+    }
+  std::vector<int> parent(faces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<GEdge *> cuts;
+  for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
+    GEdge *ge = *it;
+    const std::vector<GFace *> sides = ge->faces();
+    // two faces: a border has one, a slit inside a face too
+    if(sides.size() != 2) continue;
+    bool joined = true;
+    for(GFace *gf : sides) joined = joined && index.count(gf);
+    if(!joined || !reparamIsCrossableCurve(ge)) continue;
+    cuts.push_back(ge);
+    parent[rootOf(parent, index[sides[0]])] =
+      rootOf(parent, index[sides.back()]);
+  }
+  std::map<int, cutGroup> groups;
+  for(GEdge *ge : cuts)
+    groups[rootOf(parent, index[ge->faces()[0]])].cuts.push_back(ge);
+  for(std::size_t f = 0; f < faces.size(); f++) {
+    auto it = groups.find(rootOf(parent, (int)f));
+    if(it != groups.end()) it->second.faces.push_back(faces[f]);
+  }
+  std::vector<cutGroup> list;
+  for(auto &g : groups) list.push_back(g.second);
+  return list;
+}
+
+int reparamOptimizeMeshedModel(GModel *m)
+{
+  if(!getReparamOptions().optimize ||
+     getReparamOptions().parametrization ==
+       (int)compoundParametrization::gmsh)
+    return 0;
+  int changed = 0;
+  for(const cutGroup &g : facesJoinedByCuts(m))
+    if(!alreadyOptimized(g)) changed += optimizeGroup(g);
+  return changed;
+}
