@@ -314,7 +314,8 @@ namespace {
     meshOptimizationOptions o;
     o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;
     const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);
-    if(!r.flips && !r.moves && !r.inserted && !r.splits && !r.collapses) {
+    if(!r.flips && !r.moves && !r.inserted && !r.splits && !r.collapses &&
+       !r.cavities) {
       Msg::Debug("Reparam: surfaces %s: nothing to change across their cuts",
                  tagList(g.faces).c_str());
       return false;
@@ -326,11 +327,12 @@ namespace {
     Msg::Info("Reparam: surfaces %s optimized across their %lu cut curves "
               "(%lu crossed): kappa min %.3g -> %.3g, %lu -> %lu triangles "
               "below %g, %lu -> %lu against the input; %lu long edges split, "
-              "%lu short ones collapsed, %lu flips and %lu node moves (%g s)",
+              "%lu short ones collapsed, %lu tangles re-meshed, %lu flips and %lu "
+              "node moves (%g s)",
               tagList(g.faces).c_str(), g.cuts.size(), writer.crossedCurves(),
               r.minBefore, r.minAfter, r.belowBefore, r.belowAfter, o.target,
-              r.againstBefore, r.againstAfter, r.splits, r.collapses, r.flips,
-              r.moves, seconds);
+              r.againstBefore, r.againstAfter, r.splits, r.collapses,
+              r.cavities, r.flips, r.moves, seconds);
     return true;
   }
 

@@ -114,7 +114,8 @@ bool reparamOptimizeMeshedFace(GFace *gf)
   // than asked (fewer triangles, edges closer to the size; slower)
   o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;
   const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);
-  if(r.flips || r.moves || r.inserted || r.splits || r.collapses)
+  if(r.flips || r.moves || r.inserted || r.splits || r.collapses ||
+     r.cavities)
     writeBack(gf, m, nodes);
   optimizationRecord done;
   done.done = true;
@@ -137,11 +138,11 @@ bool reparamOptimizeMeshedFace(GFace *gf)
   Msg::Info("Reparam: surface %d: optimized on the input: kappa min %.3g -> "
             "%.3g, %lu -> %lu triangles below %g, %lu -> %lu against the "
             "input; %lu input nodes the mesh cut off inserted, %lu long "
-            "edges split, %lu short ones collapsed, %lu flips and %lu node "
-            "moves in %lu passes (%g s)",
+            "edges split, %lu short ones collapsed, %lu tangles re-meshed, "
+            "%lu flips and %lu node moves in %lu passes (%g s)",
             gf->tag(), r.minBefore, r.minAfter, r.belowBefore, r.belowAfter,
             o.target, r.againstBefore, r.againstAfter, r.inserted, r.splits,
-            r.collapses, r.flips, r.moves, r.passes,
+            r.collapses, r.cavities, r.flips, r.moves, r.passes,
             TimeOfDay() - t0);
   return true;
 }

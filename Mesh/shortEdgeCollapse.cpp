@@ -158,44 +158,9 @@ namespace {
     return true;
   }
 
-  // Removes the dead points and triangles, renumbering the rest
   std::vector<int> collapser::compact()
   {
-    std::vector<int> newIndex(_m.points.size(), -1);
-    std::size_t n = 0;
-    for(std::size_t i = 0; i < _m.points.size(); i++) {
-      if(_deadPoint[i]) continue;
-      newIndex[i] = (int)n;
-      _m.points[n] = _m.points[i];
-      _m.movable[n] = _m.movable[i];
-      _m.landing[n] = _m.landing[i];
-      _m.inputNode[n] = _m.inputNode[i];
-      _m.size[n] = _m.size[i];
-      _m.origin[n] = _m.origin[i];
-      n++;
-    }
-    for(auto *v : {&_m.landing, &_m.inputNode, &_m.origin}) v->resize(n);
-    _m.points.resize(n);
-    _m.movable.resize(n);
-    _m.size.resize(n);
-    std::set<std::pair<int, int> > locked;
-    for(const auto &e : _m.lockedEdges)
-      locked.insert(std::make_pair(newIndex[e.first], newIndex[e.second]));
-    _m.lockedEdges = locked;
-    std::size_t k = 0;
-    const bool against = _m.against.size() == _m.triangles.size();
-    for(std::size_t t = 0; t < _m.triangles.size(); t++) {
-      if(_deadTriangle[t]) continue;
-      for(int &v : _m.triangles[t]) v = newIndex[v];
-      _m.triangles[k] = _m.triangles[t];
-      _m.triangleOrigin[k] = _m.triangleOrigin[t];
-      if(against) _m.against[k] = _m.against[t];
-      k++;
-    }
-    _m.triangles.resize(k);
-    _m.triangleOrigin.resize(k);
-    if(against) _m.against.resize(k);
-    return newIndex;
+    return removeDeadParts(_m, _deadPoint, _deadTriangle);
   }
 
 } // namespace

@@ -5,8 +5,10 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "farInputNodes.h"
+#include "flipRepair.h"
 #include "longEdgeSplit.h"
 #include "shortEdgeCollapse.h"
+#include "tangledCavity.h"
 #include "meshFidelity.h"
 #include "surfaceMeshOptimizer.h"
 #include "triangleQuality.h"
@@ -110,6 +112,7 @@ namespace {
     void replaceCorner(int t, int from, int to);
     std::pair<double, double> ringKappa(int v, const SPoint3 &at) const;
     SPoint3 worstTriangleApex(int v) const;
+    bool starKernelPoint(int v, SPoint3 &at) const;
     double ringFarthest(int v, const SPoint3 &at, bool &valid) const;
   };
 
@@ -245,6 +248,58 @@ namespace {
                    middle.z() + side.z());
   }
 
+  // The centroid of the kernel of v's ring projected on the plane of the
+  // input under v (the region from which every opposite edge is seen on the
+  // side the input's orientation asks), lifted back to 3D; false if empty
+  bool optimizer::starKernelPoint(int v, SPoint3 &at) const
+  {
+    const std::vector<SPoint3> &x = _m.points;
+    const closestTriangleHit hit = _onInput.closest(x[v]);
+    if(hit.triangle < 0) return false;
+    const std::array<int, 3> &it = _input.triangles[hit.triangle];
+    SVector3 n = crossprod(SVector3(_input.points[it[0]], _input.points[it[1]]),
+                           SVector3(_input.points[it[0]], _input.points[it[2]]));
+    if(norm(n) == 0.) return false;
+    n.normalize();
+    // a frame (e1, e2, n) of the plane
+    SVector3 e1 = crossprod(n, std::fabs(n.x()) < 0.9 ? SVector3(1., 0., 0.) :
+                                                        SVector3(0., 1., 0.));
+    e1.normalize();
+    const SVector3 e2 = crossprod(n, e1);
+    auto plane = [&](const SPoint3 &p) {
+      const SVector3 d(x[v], p);
+      return std::array<double, 2>{{dot(d, e1), dot(d, e2)}};
+    };
+    std::vector<std::array<double, 4> > edges;
+    std::array<double, 4> box = {{1e300, 1e300, -1e300, -1e300}};
+    for(int t : _around[v]) {
+      const std::array<int, 3> &c = _m.triangles[t];
+      int k = 0;
+      while(c[k] != v) k++;
+      const std::array<double, 2> a = plane(x[c[(k + 1) % 3]]),
+                                  b = plane(x[c[(k + 2) % 3]]);
+      edges.push_back({{a[0], a[1], b[0], b[1]}});
+      for(const auto &p : {a, b}) {
+        box[0] = std::min(box[0], p[0]);
+        box[1] = std::min(box[1], p[1]);
+        box[2] = std::max(box[2], p[0]);
+        box[3] = std::max(box[3], p[1]);
+      }
+    }
+    // (v, a, b) along the input turns counterclockwise about n: v on the
+    // left of a -> b
+    const std::vector<std::array<double, 2> > kernel =
+      starKernel(edges, box, _o.reversed ? -1 : 1);
+    if(kernel.empty()) return false;
+    double u = 0., w = 0.;
+    for(const auto &p : kernel) {
+      u += p[0] / kernel.size();
+      w += p[1] / kernel.size();
+    }
+    at = x[v] + e1 * u + e2 * w;
+    return true;
+  }
+
   // The largest distance of the centroids of the triangles around v (v at
   // `at`) to the input, less the tolerance times their longest edge;
   // `valid`: none of them points against the input
@@ -290,9 +345,15 @@ namespace {
     // worst triangle lifts a cap (v near the middle of the opposite edge)
     // that the centroid leaves: both, and halfway there
     const SPoint3 apex = worstTriangleApex(v);
+    std::vector<SPoint3> targets = {centroid, (here + centroid) * 0.5, apex,
+                                    (here + apex) * 0.5};
+    // a tangled ring (a triangle folded over its neighbours): the point
+    // every triangle around sees on the right side, in the input's tangent
+    // plane, when there is one
+    SPoint3 kernel;
+    if(before.first < 0. && starKernelPoint(v, kernel)) targets.push_back(kernel);
     std::vector<std::pair<double, closestTriangleHit> > better;
-    for(const SPoint3 &to :
-        {centroid, (here + centroid) * 0.5, apex, (here + apex) * 0.5}) {
+    for(const SPoint3 &to : targets) {
       const closestTriangleHit hit = _onInput.closest(to);
       if(hit.triangle < 0) continue;
       const std::pair<double, double> after = ringKappa(v, hit.point);
@@ -322,6 +383,48 @@ namespace {
   }
 
 } // namespace
+
+std::vector<int> removeDeadParts(optimizableMesh &m,
+                                 const std::vector<bool> &deadPoint,
+                                 const std::vector<bool> &deadTriangle)
+{
+  std::vector<int> newIndex(m.points.size(), -1);
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < m.points.size(); i++) {
+    if(deadPoint[i]) continue;
+    newIndex[i] = (int)n;
+    m.points[n] = m.points[i];
+    m.movable[n] = m.movable[i];
+    m.landing[n] = m.landing[i];
+    m.inputNode[n] = m.inputNode[i];
+    m.size[n] = m.size[i];
+    m.origin[n] = m.origin[i];
+    n++;
+  }
+  for(auto *v : {&m.landing, &m.inputNode, &m.origin}) v->resize(n);
+  m.points.resize(n);
+  m.movable.resize(n);
+  m.size.resize(n);
+  std::set<std::pair<int, int> > locked;
+  for(const auto &e : m.lockedEdges)
+    if(newIndex[e.first] >= 0 && newIndex[e.second] >= 0)
+      locked.insert(std::make_pair(newIndex[e.first], newIndex[e.second]));
+  m.lockedEdges = locked;
+  std::size_t k = 0;
+  const bool against = m.against.size() == m.triangles.size();
+  for(std::size_t t = 0; t < m.triangles.size(); t++) {
+    if(deadTriangle[t]) continue;
+    for(int &v : m.triangles[t]) v = newIndex[v];
+    m.triangles[k] = m.triangles[t];
+    m.triangleOrigin[k] = m.triangleOrigin[t];
+    if(against) m.against[k] = m.against[t];
+    k++;
+  }
+  m.triangles.resize(k);
+  m.triangleOrigin.resize(k);
+  if(against) m.against.resize(k);
+  return newIndex;
+}
 
 double worstKappa(const optimizableMesh &m)
 {
@@ -433,7 +536,16 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
     improvePoorTriangles(m, input, onInput, o, r, collapsedInto);
     if(!inserted && !splits && !collapses) break;
   }
-  r.minAfter = worstKappa(m);
   countPoorTriangles(m, o, r.belowAfter, r.againstAfter);
+  if(r.againstAfter) {
+    // tangles no flip nor single move undid: their cavities re-meshed
+    std::vector<int> centers;
+    r.cavities = remeshTangledCavities(m, input, onInput, o.reversed, &centers);
+    if(r.cavities) {
+      improvePoorTriangles(m, input, onInput, o, r, centers);
+      countPoorTriangles(m, o, r.belowAfter, r.againstAfter);
+    }
+  }
+  r.minAfter = worstKappa(m);
   return r;
 }

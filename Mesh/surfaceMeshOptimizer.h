@@ -83,6 +83,7 @@ struct meshOptimizationResult {
   std::size_t inserted = 0; // input nodes
   std::size_t splits = 0; // long edges
   std::size_t collapses = 0; // short edges
+  std::size_t cavities = 0; // tangles re-meshed (Mesh/tangledCavity.h)
   std::size_t searches = 0; // of the input, by the flips and moves
 };
 
@@ -98,6 +99,13 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
                                        const surfaceMesh &input,
                                        const closestTriangleSearch &onInput,
                                        const meshOptimizationOptions &o = {});
+
+// Removes the points and triangles of m marked dead, renumbering the rest
+// (every per-point and per-triangle array, the locked edges); returns the
+// new index of each point (-1: removed)
+std::vector<int> removeDeadParts(optimizableMesh &m,
+                                 const std::vector<bool> &deadPoint,
+                                 const std::vector<bool> &deadTriangle);
 
 // The worst kappa of m's triangles (1 without triangles)
 double worstKappa(const optimizableMesh &m);
