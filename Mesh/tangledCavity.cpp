@@ -14,11 +14,23 @@
 
 namespace {
 
-  // A cavity: its triangles, the movable nodes it removes, its boundary as
-  // directed edges in the triangles' turn
+  // A cavity: its triangles, the movable nodes it removes, its boundary
+  // loop in the triangles' turn
   struct cavity {
     std::set<int> triangles, removed;
-    std::vector<std::array<int, 2> > boundary;
+    std::vector<int> loop;
+  };
+
+  // The plane of the input under a cavity: the input triangles along the
+  // mesh turn counterclockwise about n = e1 x e2
+  struct tangentPlane {
+    SPoint3 origin;
+    SVector3 e1, e2;
+    std::array<double, 2> of(const SPoint3 &p) const
+    {
+      const SVector3 d(origin, p);
+      return {{dot(d, e1), dot(d, e2)}};
+    }
   };
 
   class cavityMesher {
@@ -33,8 +45,8 @@ namespace {
         for(int v : m.triangles[t]) _around[v].push_back((int)t);
     }
 
-    // the new node, -1 if t's cavity was left
-    int remesh(int t);
+    // whether t's cavity was re-meshed; the new node (or -1) in `center`
+    bool remesh(int t, int &center);
     std::vector<int> compact()
     {
       return removeDeadParts(_m, _deadPoint, _deadTriangle);
@@ -49,18 +61,45 @@ namespace {
     std::vector<std::vector<int> > _around;
     std::vector<bool> _deadPoint, _deadTriangle;
 
-    bool cavityOf(int t, cavity &c) const;
-    bool fanCenter(const cavity &c, closestTriangleHit &center) const;
+    bool cavityOf(int t, bool wide, cavity &c) const;
+    bool planeOf(const cavity &c, tangentPlane &plane) const;
+    bool fanCenter(const cavity &c, const tangentPlane &plane,
+                   closestTriangleHit &center) const;
+    bool validTriangle(const SPoint3 &a, const SPoint3 &b,
+                       const SPoint3 &c) const
+    {
+      return triangleKappa(a, b, c) > 0. &&
+             triangleAgainstInput(a, b, c, _input, _onInput) == _reversed;
+    }
+    bool fan(const cavity &c, const closestTriangleHit &center,
+             std::vector<std::array<int, 3> > &triangles) const;
+    bool polygon(const cavity &c, const tangentPlane &plane,
+                 std::vector<std::array<int, 3> > &triangles) const;
+    int replace(const cavity &c, const closestTriangleHit *center,
+                const std::vector<std::array<int, 3> > &triangles);
   };
 
-  bool cavityMesher::cavityOf(int t, cavity &c) const
+  // wide: the triangles around t's movable corners (removed) and t's
+  // neighbours across its edges not locked; else t and those neighbours
+  bool cavityMesher::cavityOf(int t, bool wide, cavity &c) const
   {
-    for(int v : _m.triangles[t])
-      if(_m.movable[v]) c.removed.insert(v);
-    if(c.removed.empty()) return false;
+    if(wide)
+      for(int v : _m.triangles[t])
+        if(_m.movable[v]) c.removed.insert(v);
     for(int v : c.removed)
       for(int s : _around[v]) c.triangles.insert(s);
-    // edges used twice inside are inner; an inner one locked: left alone
+    c.triangles.insert(t);
+    for(int k = 0; k < 3; k++) {
+      const int a = _m.triangles[t][k], b = _m.triangles[t][(k + 1) % 3];
+      if(_m.lockedEdges.count(std::make_pair(std::min(a, b), std::max(a, b))))
+        continue;
+      for(int s : _around[a]) {
+        const std::array<int, 3> &cs = _m.triangles[s];
+        if(s != t && std::find(cs.begin(), cs.end(), b) != cs.end())
+          c.triangles.insert(s);
+      }
+    }
+    // edges used twice are inside: none locked, none used more
     std::map<std::pair<int, int>, int> uses;
     for(int s : c.triangles)
       for(int k = 0; k < 3; k++) {
@@ -70,120 +109,202 @@ namespace {
     for(const auto &u : uses)
       if(u.second > 2 || (u.second == 2 && _m.lockedEdges.count(u.first)))
         return false;
+    // the boundary: one loop through no removed node, each of its nodes
+    // starting one edge
+    std::map<int, int> next;
     for(int s : c.triangles)
       for(int k = 0; k < 3; k++) {
         const int a = _m.triangles[s][k], b = _m.triangles[s][(k + 1) % 3];
-        if(uses[std::make_pair(std::min(a, b), std::max(a, b))] == 1)
-          c.boundary.push_back({{a, b}});
+        if(uses[std::make_pair(std::min(a, b), std::max(a, b))] != 1) continue;
+        if(c.removed.count(a) || !next.insert(std::make_pair(a, b)).second)
+          return false;
       }
-    // one loop, through no removed node: each boundary node starts one edge
-    std::map<int, int> next;
-    for(const auto &e : c.boundary) {
-      if(c.removed.count(e[0]) || c.removed.count(e[1]) ||
-         !next.insert(std::make_pair(e[0], e[1])).second)
-        return false;
-    }
-    if(c.boundary.size() < 3) return false;
-    std::size_t length = 0;
-    int v = c.boundary[0][0];
+    if(next.size() < 3) return false;
+    int v = next.begin()->first;
     do {
+      c.loop.push_back(v);
       auto it = next.find(v);
       if(it == next.end()) return false;
       v = it->second;
-      length++;
-    } while(v != c.boundary[0][0] && length <= c.boundary.size());
-    return length == c.boundary.size();
+    } while(v != c.loop[0] && c.loop.size() <= next.size());
+    return c.loop.size() == next.size() && v == c.loop[0];
   }
 
-  // The centroid of the kernel of the cavity's boundary in the plane of the
-  // input under its nodes' centroid, on the input
-  bool cavityMesher::fanCenter(const cavity &c,
-                               closestTriangleHit &center) const
+  bool cavityMesher::planeOf(const cavity &c, tangentPlane &plane) const
   {
-    const std::vector<SPoint3> &x = _m.points;
-    SPoint3 origin(0., 0., 0.);
-    for(const auto &e : c.boundary) origin += x[e[0]];
-    origin *= 1. / c.boundary.size();
-    const closestTriangleHit under = _onInput.closest(origin);
+    plane.origin = SPoint3(0., 0., 0.);
+    for(int v : c.loop) plane.origin += _m.points[v];
+    plane.origin *= 1. / c.loop.size();
+    const closestTriangleHit under = _onInput.closest(plane.origin);
     if(under.triangle < 0) return false;
     const std::array<int, 3> &it = _input.triangles[under.triangle];
     SVector3 n = crossprod(SVector3(_input.points[it[0]], _input.points[it[1]]),
                            SVector3(_input.points[it[0]], _input.points[it[2]]));
     if(norm(n) == 0.) return false;
     n.normalize();
-    SVector3 e1 = crossprod(n, std::fabs(n.x()) < 0.9 ? SVector3(1., 0., 0.) :
-                                                        SVector3(0., 1., 0.));
-    e1.normalize();
-    const SVector3 e2 = crossprod(n, e1);
+    if(_reversed) n *= -1.;
+    plane.e1 = crossprod(n, std::fabs(n.x()) < 0.9 ? SVector3(1., 0., 0.) :
+                                                     SVector3(0., 1., 0.));
+    plane.e1.normalize();
+    plane.e2 = crossprod(n, plane.e1);
+    return true;
+  }
+
+  // The centroid of the kernel of the cavity's boundary in the plane, on
+  // the input
+  bool cavityMesher::fanCenter(const cavity &c, const tangentPlane &plane,
+                               closestTriangleHit &center) const
+  {
     std::vector<std::array<double, 4> > edges;
     std::array<double, 4> box = {{1e300, 1e300, -1e300, -1e300}};
-    for(const auto &e : c.boundary) {
-      const SVector3 a(origin, x[e[0]]), b(origin, x[e[1]]);
-      edges.push_back({{dot(a, e1), dot(a, e2), dot(b, e1), dot(b, e2)}});
-      box[0] = std::min(box[0], dot(a, e1));
-      box[1] = std::min(box[1], dot(a, e2));
-      box[2] = std::max(box[2], dot(a, e1));
-      box[3] = std::max(box[3], dot(a, e2));
+    for(std::size_t k = 0; k < c.loop.size(); k++) {
+      const std::array<double, 2> a = plane.of(_m.points[c.loop[k]]),
+                                  b = plane.of(
+                                    _m.points[c.loop[(k + 1) % c.loop.size()]]);
+      edges.push_back({{a[0], a[1], b[0], b[1]}});
+      box = {{std::min(box[0], a[0]), std::min(box[1], a[1]),
+              std::max(box[2], a[0]), std::max(box[3], a[1])}};
     }
-    // the triangles along the input turn counterclockwise about n: the
-    // cavity is on the left of its boundary
+    // the cavity is on the left of its boundary
     const std::vector<std::array<double, 2> > kernel =
-      starKernel(edges, box, _reversed ? -1 : 1);
+      starKernel(edges, box, 1);
     if(kernel.empty()) return false;
     double u = 0., w = 0.;
     for(const auto &p : kernel) {
       u += p[0] / kernel.size();
       w += p[1] / kernel.size();
     }
-    const SVector3 shift = e1 * u + e2 * w;
-    center = _onInput.closest(
-      SPoint3(origin.x() + shift.x(), origin.y() + shift.y(),
-              origin.z() + shift.z()));
+    const SVector3 shift = plane.e1 * u + plane.e2 * w;
+    center = _onInput.closest(SPoint3(plane.origin.x() + shift.x(),
+                                      plane.origin.y() + shift.y(),
+                                      plane.origin.z() + shift.z()));
     return center.triangle >= 0;
   }
 
-  int cavityMesher::remesh(int t)
+  // The fan from the center (index -1) to the boundary, if all its
+  // triangles are valid
+  bool cavityMesher::fan(const cavity &c, const closestTriangleHit &center,
+                         std::vector<std::array<int, 3> > &triangles) const
   {
-    cavity c;
-    closestTriangleHit center;
-    if(!cavityOf(t, c) || !fanCenter(c, center)) return -1;
-    const std::vector<SPoint3> &x = _m.points;
-    for(const auto &e : c.boundary) {
-      const SPoint3 &a = x[e[0]], &b = x[e[1]];
-      if(triangleKappa(center.point, a, b) <= 0. ||
-         triangleAgainstInput(center.point, a, b, _input, _onInput) !=
-           _reversed)
-        return -1;
+    triangles.clear();
+    for(std::size_t k = 0; k < c.loop.size(); k++) {
+      const int a = c.loop[k], b = c.loop[(k + 1) % c.loop.size()];
+      if(!validTriangle(center.point, _m.points[a], _m.points[b]))
+        return false;
+      triangles.push_back({{-1, a, b}});
     }
+    return true;
+  }
+
+  // The triangulation of the boundary loop alone with the best worst kappa
+  // (dynamic programming over its sub-polygons), every triangle turning
+  // the loop's way in the plane and along the input
+  bool cavityMesher::polygon(const cavity &c, const tangentPlane &plane,
+                             std::vector<std::array<int, 3> > &triangles) const
+  {
+    const int n = (int)c.loop.size();
+    if(n > 24) return false;
+    const std::vector<SPoint3> &x = _m.points;
+    std::vector<std::array<double, 2> > p(n);
+    for(int i = 0; i < n; i++) p[i] = plane.of(x[c.loop[i]]);
+    auto quality = [&](int i, int k, int j) {
+      const double turn = (p[k][0] - p[i][0]) * (p[j][1] - p[i][1]) -
+                          (p[k][1] - p[i][1]) * (p[j][0] - p[i][0]);
+      const SPoint3 &a = x[c.loop[i]], &b = x[c.loop[k]], &d = x[c.loop[j]];
+      if(turn <= 0. || !validTriangle(a, b, d)) return -1.;
+      return triangleKappa(a, b, d);
+    };
+    // best[i][j]: the worst kappa of the best triangulation of i..j
+    std::vector<std::vector<double> > best(n, std::vector<double>(n, -1.));
+    std::vector<std::vector<int> > split(n, std::vector<int>(n, -1));
+    for(int i = 0; i + 1 < n; i++) best[i][i + 1] = 2.;
+    for(int length = 2; length < n; length++)
+      for(int i = 0; i + length < n; i++) {
+        const int j = i + length;
+        for(int k = i + 1; k < j; k++) {
+          if(best[i][k] < 0. || best[k][j] < 0.) continue;
+          const double q = quality(i, k, j);
+          const double worst = std::min(q, std::min(best[i][k], best[k][j]));
+          if(q > 0. && worst > best[i][j]) {
+            best[i][j] = worst;
+            split[i][j] = k;
+          }
+        }
+      }
+    if(best[0][n - 1] <= 0.) return false;
+    triangles.clear();
+    std::vector<std::pair<int, int> > todo = {{0, n - 1}};
+    while(!todo.empty()) {
+      const std::pair<int, int> s = todo.back();
+      todo.pop_back();
+      if(s.second - s.first < 2) continue;
+      const int k = split[s.first][s.second];
+      triangles.push_back(
+        {{c.loop[s.first], c.loop[k], c.loop[s.second]}});
+      todo.push_back(std::make_pair(s.first, k));
+      todo.push_back(std::make_pair(k, s.second));
+    }
+    return true;
+  }
+
+  // The cavity's triangles and removed nodes dead, the new ones added
+  // (corner -1: the new center); returns the center's index, or -1
+  int cavityMesher::replace(const cavity &c, const closestTriangleHit *center,
+                            const std::vector<std::array<int, 3> > &triangles)
+  {
     for(int s : c.triangles) _deadTriangle[s] = true;
     for(int v : c.removed) _deadPoint[v] = true;
-    const int n = (int)_m.points.size();
-    double size = 0.;
-    for(const auto &e : c.boundary) size += _m.size[e[0]] / c.boundary.size();
-    _m.points.push_back(center.point);
-    _m.movable.push_back(true);
-    _m.landing.push_back(center.triangle);
-    _m.inputNode.push_back(-1);
-    _m.size.push_back(size);
-    _m.origin.push_back(-1);
-    _deadPoint.push_back(false);
-    _around.emplace_back();
-    for(const auto &e : c.boundary) {
+    for(int v : c.loop) {
+      std::vector<int> &l = _around[v];
+      l.erase(std::remove_if(l.begin(), l.end(),
+                             [&](int s) { return c.triangles.count(s) > 0; }),
+              l.end());
+    }
+    int n = -1;
+    if(center) {
+      n = (int)_m.points.size();
+      double size = 0.;
+      for(int v : c.loop) size += _m.size[v] / c.loop.size();
+      _m.points.push_back(center->point);
+      _m.movable.push_back(true);
+      _m.landing.push_back(center->triangle);
+      _m.inputNode.push_back(-1);
+      _m.size.push_back(size);
+      _m.origin.push_back(-1);
+      _deadPoint.push_back(false);
+      _around.emplace_back();
+    }
+    for(std::array<int, 3> t : triangles) {
+      for(int &v : t)
+        if(v < 0) v = n;
       const int s = (int)_m.triangles.size();
-      _m.triangles.push_back({{n, e[0], e[1]}});
+      _m.triangles.push_back(t);
       _m.triangleOrigin.push_back(-1);
       _m.against.push_back(false);
       _deadTriangle.push_back(false);
-      for(int v : _m.triangles[s]) _around[v].push_back(s);
+      for(int v : t) _around[v].push_back(s);
     }
-    for(const auto &e : c.boundary)
-      for(int v : e) {
-        std::vector<int> &l = _around[v];
-        l.erase(std::remove_if(l.begin(), l.end(),
-                               [&](int s) { return c.triangles.count(s) > 0; }),
-                l.end());
-      }
     return n;
+  }
+
+  bool cavityMesher::remesh(int t, int &center)
+  {
+    for(bool wide : {true, false}) {
+      cavity c;
+      tangentPlane plane;
+      if(!cavityOf(t, wide, c) || !planeOf(c, plane)) continue;
+      std::vector<std::array<int, 3> > triangles;
+      closestTriangleHit hit;
+      if(fanCenter(c, plane, hit) && fan(c, hit, triangles)) {
+        center = replace(c, &hit, triangles);
+        return true;
+      }
+      if(polygon(c, plane, triangles)) {
+        center = replace(c, nullptr, triangles);
+        return true;
+      }
+    }
+    return false;
   }
 
 } // namespace
@@ -201,14 +322,16 @@ std::size_t remeshTangledCavities(optimizableMesh &m, const surfaceMesh &input,
   if(tangled.empty()) return 0;
   cavityMesher mesher(m, input, onInput, reversed);
   std::vector<int> made;
+  std::size_t cavities = 0;
   for(int t : tangled) {
-    if(mesher.dead(t)) continue;
-    const int center = mesher.remesh(t);
+    int center = -1;
+    if(mesher.dead(t) || !mesher.remesh(t, center)) continue;
+    cavities++;
     if(center >= 0) made.push_back(center);
   }
-  if(made.empty()) return 0;
+  if(!cavities) return 0;
   const std::vector<int> newIndex = mesher.compact();
   if(centers)
     for(int v : made) centers->push_back(newIndex[v]);
-  return made.size();
+  return cavities;
 }

@@ -128,3 +128,36 @@ TEST(tangledCavity, fixedCornersAloneAreLeft)
   EXPECT_EQ(remeshTangledCavities(m, input, onInput, false), 0u);
   EXPECT_EQ(m.triangles.size(), triangles);
 }
+
+TEST(tangledCavity, aDartWithItsDiagonalOutsideIsRetriangulated)
+{
+  // four fixed nodes, the second one a reflex corner; the diagonal 0-2 runs
+  // outside, so that triangle (0, 1, 2) turns over
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(10, 10, 2., 2.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  optimizableMesh m;
+  m.points = {SPoint3(0., 0., 0.), SPoint3(1., 0.6, 0.), SPoint3(2., 0., 0.),
+              SPoint3(1., 2., 0.)};
+  m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+  m.size.assign(4, 1.);
+  m.movable.assign(4, false);
+  m.landing.assign(4, -1);
+  m.inputNode.assign(4, -1);
+  m.origin = {0, 1, 2, 3};
+  m.triangleOrigin = {0, 1};
+  m.against = againstFlags(m, input, onInput);
+  ASSERT_TRUE(m.against[0]);
+  ASSERT_FALSE(m.against[1]);
+  EXPECT_EQ(remeshTangledCavities(m, input, onInput, false), 1u);
+  const std::vector<bool> after = againstFlags(m, input, onInput);
+  EXPECT_EQ(std::count(after.begin(), after.end(), true), 0);
+  // the dart's area, covered once: 2 - 0.6 (twice: 2.8)
+  double area = 0.;
+  for(const auto &t : m.triangles)
+    area += crossprod(SVector3(m.points[t[0]], m.points[t[1]]),
+                      SVector3(m.points[t[0]], m.points[t[2]])).z();
+  EXPECT_NEAR(area, 2.8, 1e-9);
+  std::size_t border = 0;
+  for(const auto &e : edgeUses(m)) border += e.second == 1;
+  EXPECT_EQ(border, 4u);
+}
