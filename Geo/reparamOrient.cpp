@@ -34,10 +34,18 @@ bool reparamOrientMeshedFace(GFace *gf)
   // elements were edited) counts again
   faceReport *report = findFaceReport(gf);
   if(report && report->oriented) report = nullptr;
-  std::size_t inverted =
-    report && report->hasInput ?
-      report->fidelity.inverted :
-      countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
+  // else the optimizer's count, on all the inputs of the faces it worked
+  // on together (a triangle across a crossed cut lies over its neighbour's
+  // input too: on gf's own input alone it may seem against), else a count
+  const optimizationRecord *optimized = findOptimization(gf);
+  std::size_t inverted = 0;
+  if(report && report->hasInput)
+    inverted = report->fidelity.inverted;
+  else if(optimized && gf->quadrangles.empty())
+    inverted = optimized->reversed ? elements - optimized->againstAfter :
+                                     optimized->againstAfter;
+  else
+    inverted = countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
   if(2 * inverted > elements) {
     for(std::size_t i = 0; i < elements; i++) gf->getMeshElement(i)->reverse();
     inverted = elements - inverted;

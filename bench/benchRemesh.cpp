@@ -18,7 +18,10 @@
 // discrete faces (those whose parametrization failed too), meshed: those
 // that got elements;
 // inverted: elements (after Gmsh orients them) pointing against the input
-// under them (meshFidelity::inverted); hausdorff and mean: largest
+// under them (meshFidelity::inverted), on the face's input, or on the inputs
+// of the faces joined by cuts together (Mesh.CompoundOptimize moves
+// triangles across them);
+// hausdorff and mean: largest
 // and element-weighted mean two-sided distance of a face to its input, in %
 // of the input's bounding-box diagonal; kappa over all triangles, eta over
 // all quadrangles, tau (%) over all edges; fallbacks: faces where the map
@@ -29,6 +32,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 #include <vector>
 #include "GFace.h"
 #include "GModel.h"
@@ -39,7 +43,77 @@
 #include "gmsh.h"
 #include "meshFidelity.h"
 #include "faceQuality.h"
+#include "reparamOptimizeAcrossCuts.h"
 #include "reparamReport.h"
+
+namespace {
+
+  // The elements of the faces' meshes pointing against their inputs taken
+  // together (with REPARAM_BENCH_FACES, printed face by face)
+  std::size_t countInvertedTogether(const std::vector<GFace *> &faces)
+  {
+    surfaceMesh input, output;
+    for(GFace *gf : faces) {
+      for(surfaceMesh *m : {&input, &output}) {
+        const surfaceMesh one =
+          m == &input ? inputTriangulationOf(gf) : surfaceMeshOf(gf);
+        const int offset = (int)m->points.size();
+        m->points.insert(m->points.end(), one.points.begin(), one.points.end());
+        for(std::array<int, 3> t : one.triangles) {
+          for(int &v : t) v += offset;
+          m->triangles.push_back(t);
+        }
+        for(std::array<int, 4> q : one.quadrangles) {
+          for(int &v : q) v += offset;
+          m->quadrangles.push_back(q);
+        }
+      }
+    }
+    const std::vector<std::size_t> against = invertedElements(input, output);
+    if(std::getenv("REPARAM_BENCH_FACES")) {
+      // element i: triangles of all faces first, then quadrangles
+      std::vector<std::size_t> perFace(faces.size(), 0);
+      for(std::size_t e : against) {
+        std::size_t rest = e, f = 0;
+        const bool quad = e >= output.triangles.size();
+        if(quad) rest -= output.triangles.size();
+        for(; f < faces.size(); f++) {
+          const std::size_t n = quad ? faces[f]->quadrangles.size() :
+                                       faces[f]->triangles.size();
+          if(rest < n) break;
+          rest -= n;
+        }
+        if(f < faces.size()) perFace[f]++;
+      }
+      for(std::size_t f = 0; f < faces.size(); f++)
+        if(perFace[f])
+          std::printf("face %d elements %lu inverted %lu input %lu\n",
+                      faces[f]->tag(), faces[f]->getNumMeshElements(),
+                      perFace[f], faces[f]->stl_triangles.size() / 3);
+    }
+    return against.size();
+  }
+
+  // Each face against its own input, but the faces joined by crossed cuts
+  // (Mesh.CompoundOptimize moves triangles across them) against their
+  // inputs together
+  std::size_t countInverted(const std::vector<GFace *> &faces)
+  {
+    std::set<GFace *> meshed(faces.begin(), faces.end()), grouped;
+    std::size_t inverted = 0;
+    for(const cutGroup &g : facesJoinedByCuts(GModel::current())) {
+      std::vector<GFace *> members;
+      for(GFace *gf : g.faces)
+        if(meshed.count(gf)) members.push_back(gf);
+      grouped.insert(members.begin(), members.end());
+      inverted += countInvertedTogether(members);
+    }
+    for(GFace *gf : faces)
+      if(!grouped.count(gf)) inverted += countInvertedTogether({gf});
+    return inverted;
+  }
+
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -105,16 +179,15 @@ int main(int argc, char **argv)
         std::min(kappaMinBeforeOptimization, o->kappaMinBefore);
       optimization += o->seconds;
     }
+    // the distances face by face, the orientation below on the whole input
+    const std::size_t none = 0;
     meshFidelity f =
-      compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf));
-    inverted += f.inverted;
-    if(f.inverted && std::getenv("REPARAM_BENCH_FACES"))
-      std::printf("face %d elements %lu inverted %lu input %lu\n", gf->tag(),
-                  f.elements, f.inverted, gf->stl_triangles.size() / 3);
+      compareToInput(inputTriangulationOf(gf), surfaceMeshOf(gf), &none);
     hausdorff = std::max(hausdorff, f.hausdorff);
     weightedMean += f.meanDistance * f.elements;
     weight += f.elements;
   }
+  inverted = countInverted(meshedFaces);
   // faces whose CreateGeometry failed: not meshed, holes in the mesh
   faces += unparametrizedFaces(GModel::current()).size();
   double diagonal = box.empty() ? 1. : box.diag();
