@@ -34,17 +34,14 @@ bool reparamOrientMeshedFace(GFace *gf)
   // elements were edited) counts again
   faceReport *report = findFaceReport(gf);
   if(report && report->oriented) report = nullptr;
-  // else the optimizer's count, on all the inputs of the faces it worked
-  // on together (a triangle across a crossed cut lies over its neighbour's
-  // input too: on gf's own input alone it may seem against), else a count
-  const optimizationRecord *optimized = findOptimization(gf);
+  // else the optimizer's count (once): on all the inputs of the faces it
+  // worked on together (a triangle across a crossed cut lies over its
+  // neighbour's input too: on gf's own input alone it may seem against)
   std::size_t inverted = 0;
+  const bool counted = takeOptimizationCount(gf, inverted);
   if(report && report->hasInput)
     inverted = report->fidelity.inverted;
-  else if(optimized && gf->quadrangles.empty())
-    inverted = optimized->reversed ? elements - optimized->againstAfter :
-                                     optimized->againstAfter;
-  else
+  else if(!counted)
     inverted = countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
   if(2 * inverted > elements) {
     for(std::size_t i = 0; i < elements; i++) gf->getMeshElement(i)->reverse();

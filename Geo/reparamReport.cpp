@@ -110,6 +110,17 @@ const optimizationRecord *findOptimization(const GFace *gf)
   return &r;
 }
 
+bool takeOptimizationCount(const GFace *gf, std::size_t &inverted)
+{
+  const optimizationRecord *found = findOptimization(gf);
+  std::lock_guard<std::mutex> lock(reportsMutex());
+  if(!found || found->countTaken || !gf->quadrangles.empty()) return false;
+  optimizationRecord &r = optimizations()[gf];
+  r.countTaken = true;
+  inverted = r.reversed ? r.elements - r.againstAfter : r.againstAfter;
+  return true;
+}
+
 void forgetOptimization(const GFace *gf)
 {
   std::lock_guard<std::mutex> lock(reportsMutex());

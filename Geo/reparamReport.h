@@ -55,6 +55,7 @@ struct optimizationRecord {
   // made by the optimization of the faces a patch was cut into, together
   // (Geo/reparamOptimizeAcrossCuts.h)
   bool acrossCuts = false;
+  bool countTaken = false; // by takeOptimizationCount
   // the mesh it left, to tell whether it is still gf's
   std::size_t elements = 0;
   const MElement *firstElement = nullptr;
@@ -64,6 +65,10 @@ struct optimizationRecord {
 void recordOptimization(const GFace *gf, const optimizationRecord &record);
 // The record of the optimization of gf's current mesh, or null
 const optimizationRecord *findOptimization(const GFace *gf);
+// The record's count of gf's elements against the input, the first time it
+// is asked for the current mesh (the orientation vote, Geo/reparamOrient.h;
+// a later call, after elements were edited in place, must count again)
+bool takeOptimizationCount(const GFace *gf, std::size_t &inverted);
 // Forgets it: gf's mesh was changed since (same element count or not)
 void forgetOptimization(const GFace *gf);
 

@@ -5,7 +5,6 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "farInputNodes.h"
-#include "flipRepair.h"
 #include "longEdgeSplit.h"
 #include "shortEdgeCollapse.h"
 #include "tangledCavity.h"
@@ -254,49 +253,23 @@ namespace {
   bool optimizer::starKernelPoint(int v, SPoint3 &at) const
   {
     const std::vector<SPoint3> &x = _m.points;
-    const closestTriangleHit hit = _onInput.closest(x[v]);
-    if(hit.triangle < 0) return false;
-    const std::array<int, 3> &it = _input.triangles[hit.triangle];
-    SVector3 n = crossprod(SVector3(_input.points[it[0]], _input.points[it[1]]),
-                           SVector3(_input.points[it[0]], _input.points[it[2]]));
-    if(norm(n) == 0.) return false;
-    n.normalize();
-    // a frame (e1, e2, n) of the plane
-    SVector3 e1 = crossprod(n, std::fabs(n.x()) < 0.9 ? SVector3(1., 0., 0.) :
-                                                        SVector3(0., 1., 0.));
-    e1.normalize();
-    const SVector3 e2 = crossprod(n, e1);
-    auto plane = [&](const SPoint3 &p) {
-      const SVector3 d(x[v], p);
-      return std::array<double, 2>{{dot(d, e1), dot(d, e2)}};
-    };
+    tangentFrame plane;
+    if(!inputTangentFrame(_input, _onInput, x[v], _o.reversed, plane))
+      return false;
+    // (v, a, b) along the input turns counterclockwise in the plane: v on
+    // the left of a -> b
     std::vector<std::array<double, 4> > edges;
-    std::array<double, 4> box = {{1e300, 1e300, -1e300, -1e300}};
     for(int t : _around[v]) {
       const std::array<int, 3> &c = _m.triangles[t];
       int k = 0;
       while(c[k] != v) k++;
-      const std::array<double, 2> a = plane(x[c[(k + 1) % 3]]),
-                                  b = plane(x[c[(k + 2) % 3]]);
+      const std::array<double, 2> a = plane.of(x[c[(k + 1) % 3]]),
+                                  b = plane.of(x[c[(k + 2) % 3]]);
       edges.push_back({{a[0], a[1], b[0], b[1]}});
-      for(const auto &p : {a, b}) {
-        box[0] = std::min(box[0], p[0]);
-        box[1] = std::min(box[1], p[1]);
-        box[2] = std::max(box[2], p[0]);
-        box[3] = std::max(box[3], p[1]);
-      }
     }
-    // (v, a, b) along the input turns counterclockwise about n: v on the
-    // left of a -> b
-    const std::vector<std::array<double, 2> > kernel =
-      starKernel(edges, box, _o.reversed ? -1 : 1);
-    if(kernel.empty()) return false;
-    double u = 0., w = 0.;
-    for(const auto &p : kernel) {
-      u += p[0] / kernel.size();
-      w += p[1] / kernel.size();
-    }
-    at = x[v] + e1 * u + e2 * w;
+    std::array<double, 2> middle;
+    if(!kernelCentroid(edges, middle)) return false;
+    at = plane.at(middle[0], middle[1]);
     return true;
   }
 

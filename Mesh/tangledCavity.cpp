@@ -21,18 +21,6 @@ namespace {
     std::vector<int> loop;
   };
 
-  // The plane of the input under a cavity: the input triangles along the
-  // mesh turn counterclockwise about n = e1 x e2
-  struct tangentPlane {
-    SPoint3 origin;
-    SVector3 e1, e2;
-    std::array<double, 2> of(const SPoint3 &p) const
-    {
-      const SVector3 d(origin, p);
-      return {{dot(d, e1), dot(d, e2)}};
-    }
-  };
-
   class cavityMesher {
   public:
     cavityMesher(optimizableMesh &m, const surfaceMesh &input,
@@ -62,8 +50,8 @@ namespace {
     std::vector<bool> _deadPoint, _deadTriangle;
 
     bool cavityOf(int t, bool wide, cavity &c) const;
-    bool planeOf(const cavity &c, tangentPlane &plane) const;
-    bool fanCenter(const cavity &c, const tangentPlane &plane,
+    bool planeOf(const cavity &c, tangentFrame &plane) const;
+    bool fanCenter(const cavity &c, const tangentFrame &plane,
                    closestTriangleHit &center) const;
     bool validTriangle(const SPoint3 &a, const SPoint3 &b,
                        const SPoint3 &c) const
@@ -73,7 +61,7 @@ namespace {
     }
     bool fan(const cavity &c, const closestTriangleHit &center,
              std::vector<std::array<int, 3> > &triangles) const;
-    bool polygon(const cavity &c, const tangentPlane &plane,
+    bool polygon(const cavity &c, const tangentFrame &plane,
                  std::vector<std::array<int, 3> > &triangles) const;
     int replace(const cavity &c, const closestTriangleHit *center,
                 const std::vector<std::array<int, 3> > &triangles);
@@ -130,54 +118,30 @@ namespace {
     return c.loop.size() == next.size() && v == c.loop[0];
   }
 
-  bool cavityMesher::planeOf(const cavity &c, tangentPlane &plane) const
+  bool cavityMesher::planeOf(const cavity &c, tangentFrame &plane) const
   {
-    plane.origin = SPoint3(0., 0., 0.);
-    for(int v : c.loop) plane.origin += _m.points[v];
-    plane.origin *= 1. / c.loop.size();
-    const closestTriangleHit under = _onInput.closest(plane.origin);
-    if(under.triangle < 0) return false;
-    const std::array<int, 3> &it = _input.triangles[under.triangle];
-    SVector3 n = crossprod(SVector3(_input.points[it[0]], _input.points[it[1]]),
-                           SVector3(_input.points[it[0]], _input.points[it[2]]));
-    if(norm(n) == 0.) return false;
-    n.normalize();
-    if(_reversed) n *= -1.;
-    plane.e1 = crossprod(n, std::fabs(n.x()) < 0.9 ? SVector3(1., 0., 0.) :
-                                                     SVector3(0., 1., 0.));
-    plane.e1.normalize();
-    plane.e2 = crossprod(n, plane.e1);
-    return true;
+    SPoint3 origin(0., 0., 0.);
+    for(int v : c.loop) origin += _m.points[v];
+    origin *= 1. / c.loop.size();
+    return inputTangentFrame(_input, _onInput, origin, _reversed, plane);
   }
 
   // The centroid of the kernel of the cavity's boundary in the plane, on
   // the input
-  bool cavityMesher::fanCenter(const cavity &c, const tangentPlane &plane,
+  bool cavityMesher::fanCenter(const cavity &c, const tangentFrame &plane,
                                closestTriangleHit &center) const
   {
     std::vector<std::array<double, 4> > edges;
-    std::array<double, 4> box = {{1e300, 1e300, -1e300, -1e300}};
     for(std::size_t k = 0; k < c.loop.size(); k++) {
       const std::array<double, 2> a = plane.of(_m.points[c.loop[k]]),
                                   b = plane.of(
                                     _m.points[c.loop[(k + 1) % c.loop.size()]]);
       edges.push_back({{a[0], a[1], b[0], b[1]}});
-      box = {{std::min(box[0], a[0]), std::min(box[1], a[1]),
-              std::max(box[2], a[0]), std::max(box[3], a[1])}};
     }
     // the cavity is on the left of its boundary
-    const std::vector<std::array<double, 2> > kernel =
-      starKernel(edges, box, 1);
-    if(kernel.empty()) return false;
-    double u = 0., w = 0.;
-    for(const auto &p : kernel) {
-      u += p[0] / kernel.size();
-      w += p[1] / kernel.size();
-    }
-    const SVector3 shift = plane.e1 * u + plane.e2 * w;
-    center = _onInput.closest(SPoint3(plane.origin.x() + shift.x(),
-                                      plane.origin.y() + shift.y(),
-                                      plane.origin.z() + shift.z()));
+    std::array<double, 2> middle;
+    if(!kernelCentroid(edges, middle)) return false;
+    center = _onInput.closest(plane.at(middle[0], middle[1]));
     return center.triangle >= 0;
   }
 
@@ -199,7 +163,7 @@ namespace {
   // The triangulation of the boundary loop alone with the best worst kappa
   // (dynamic programming over its sub-polygons), every triangle turning
   // the loop's way in the plane and along the input
-  bool cavityMesher::polygon(const cavity &c, const tangentPlane &plane,
+  bool cavityMesher::polygon(const cavity &c, const tangentFrame &plane,
                              std::vector<std::array<int, 3> > &triangles) const
   {
     const int n = (int)c.loop.size();
@@ -291,7 +255,7 @@ namespace {
   {
     for(bool wide : {true, false}) {
       cavity c;
-      tangentPlane plane;
+      tangentFrame plane;
       if(!cavityOf(t, wide, c) || !planeOf(c, plane)) continue;
       std::vector<std::array<int, 3> > triangles;
       closestTriangleHit hit;
@@ -308,6 +272,46 @@ namespace {
   }
 
 } // namespace
+
+bool inputTangentFrame(const surfaceMesh &input,
+                       const closestTriangleSearch &onInput,
+                       const SPoint3 &origin, bool reversed,
+                       tangentFrame &frame)
+{
+  const closestTriangleHit under = onInput.closest(origin);
+  if(under.triangle < 0) return false;
+  const std::array<int, 3> &t = input.triangles[under.triangle];
+  SVector3 n = crossprod(SVector3(input.points[t[0]], input.points[t[1]]),
+                         SVector3(input.points[t[0]], input.points[t[2]]));
+  if(norm(n) == 0.) return false;
+  n.normalize();
+  if(reversed) n *= -1.;
+  frame.origin = origin;
+  frame.e1 = crossprod(n, std::fabs(n.x()) < 0.9 ? SVector3(1., 0., 0.) :
+                                                   SVector3(0., 1., 0.));
+  frame.e1.normalize();
+  frame.e2 = crossprod(n, frame.e1);
+  return true;
+}
+
+bool kernelCentroid(const std::vector<std::array<double, 4> > &edges,
+                    std::array<double, 2> &centroid)
+{
+  std::array<double, 4> box = {{1e300, 1e300, -1e300, -1e300}};
+  for(const auto &e : edges)
+    for(int k : {0, 2})
+      box = {{std::min(box[0], e[k]), std::min(box[1], e[k + 1]),
+              std::max(box[2], e[k]), std::max(box[3], e[k + 1])}};
+  const std::vector<std::array<double, 2> > kernel =
+    starKernel(edges, box, 1);
+  if(kernel.empty()) return false;
+  centroid = {{0., 0.}};
+  for(const auto &p : kernel) {
+    centroid[0] += p[0] / kernel.size();
+    centroid[1] += p[1] / kernel.size();
+  }
+  return true;
+}
 
 std::size_t remeshTangledCavities(optimizableMesh &m, const surfaceMesh &input,
                                   const closestTriangleSearch &onInput,

@@ -16,12 +16,44 @@
 #ifndef TANGLED_CAVITY_H
 #define TANGLED_CAVITY_H
 
+#include <array>
 #include <cstddef>
 #include <vector>
+#include "SPoint3.h"
+#include "SVector3.h"
 
 class closestTriangleSearch;
 struct optimizableMesh;
 struct surfaceMesh;
+
+// The plane of the input triangle closest to a point, as a frame at the
+// point: e1 x e2 is the triangle's normal (turned over where `reversed`),
+// so that the mesh triangles along the input turn counterclockwise in it
+struct tangentFrame {
+  SPoint3 origin;
+  SVector3 e1, e2;
+  std::array<double, 2> of(const SPoint3 &p) const
+  {
+    const SVector3 d(origin, p);
+    return {{dot(d, e1), dot(d, e2)}};
+  }
+  SPoint3 at(double u, double w) const
+  {
+    const SVector3 d = e1 * u + e2 * w;
+    return SPoint3(origin.x() + d.x(), origin.y() + d.y(), origin.z() + d.z());
+  }
+};
+// false where there is no input or its closest triangle is degenerate
+bool inputTangentFrame(const surfaceMesh &input,
+                       const closestTriangleSearch &onInput,
+                       const SPoint3 &origin, bool reversed,
+                       tangentFrame &frame);
+
+// The centroid (mean of the corners) of the kernel of a star or polygon in
+// such a plane, the region from which every edge (ax, ay, bx, by) is seen
+// on its left (Mesh/flipRepair.h's starKernel); false if empty
+bool kernelCentroid(const std::vector<std::array<double, 4> > &edges,
+                    std::array<double, 2> &centroid);
 
 // Re-meshes the cavity around each triangle of m marked against the input
 // (optimizableMesh::against) whose boundary is one loop, with no locked
