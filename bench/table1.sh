@@ -55,8 +55,9 @@ python3 - "$results" "$timeout" <<'PY'
 import sys
 rows = [l.split() for l in open(sys.argv[1])]
 timeout = sys.argv[2]
-mapNames = {"0": "Gmsh (0)", "3": "mean value (3)", "4": "FE conformal (4)",
-            "5": "spectral (5)"}
+mapNames = {"0": "Gmsh (0)", "1": "harmonic (1)", "2": "barycentric (2)",
+            "3": "mean value (3)", "4": "FE conformal (4)",
+            "5": "spectral (5)", "6": "automatic (6)"}
 mesherNames = {"1": "MeshAdapt", "5": "Delaunay", "6": "Frontal-Delaunay"}
 print("| mesh | map | mesher | faces meshed | CreateGeometry (s) | Mesh 2 (s) "
       "| elements | kappa min | kappa min before optimization "
