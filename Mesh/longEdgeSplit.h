@@ -22,7 +22,9 @@ struct surfaceMesh;
 // per triangle and its neighbours, where no new triangle points against the
 // input (reversed: m's triangles turn against the input's) nor is worse than
 // the worst triangle of m (or 0.5) and the two it replaces (an edge across a
-// strip narrower than the size stays): splits do not lower m's worst kappa;
+// strip narrower than the size stays): splits do not lower m's worst kappa,
+// except for an edge whose midpoint is farther from the input than a tenth
+// of its length (it cuts a crease or a hole's wall off: fidelity first);
 // the new nodes are movable. Returns how many (0 if m has no sizes)
 std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
                            const closestTriangleSearch &onInput, bool reversed,
