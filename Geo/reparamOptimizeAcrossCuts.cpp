@@ -155,10 +155,14 @@ namespace {
     std::vector<int> writeTriangles(const std::vector<MVertex *> &out)
     {
       std::vector<MTriangle *> old;
-      for(GFace *gf : _g.faces)
-        old.insert(old.end(), gf->triangles.begin(), gf->triangles.end());
+      std::vector<int> oldFace;
+      for(std::size_t f = 0; f < _g.faces.size(); f++) {
+        const std::vector<MTriangle *> &own = _g.faces[f]->triangles;
+        old.insert(old.end(), own.begin(), own.end());
+        oldFace.insert(oldFace.end(), own.size(), (int)f);
+      }
       std::vector<bool> kept(old.size(), false);
-      std::vector<std::vector<MTriangle *> > byFace(_g.faces.size());
+      std::vector<MTriangle *> triangles(_m.triangles.size(), nullptr);
       std::vector<int> triangleFace(_m.triangles.size(), 0);
       for(std::size_t t = 0; t < _m.triangles.size(); t++) {
         MVertex *c[3];
@@ -169,21 +173,39 @@ namespace {
         }
         centroid *= 1. / 3.;
         const int origin = _m.triangleOrigin[t];
-        MTriangle *tri = nullptr;
         if(origin < 0)
-          tri = new MTriangle(c[0], c[1], c[2]);
+          triangles[t] = new MTriangle(c[0], c[1], c[2]);
         else {
-          tri = old[origin];
+          triangles[t] = old[origin];
           kept[origin] = true;
-          for(int k = 0; k < 3; k++) tri->setVertex(k, c[k]);
+          for(int k = 0; k < 3; k++) triangles[t]->setVertex(k, c[k]);
         }
         triangleFace[t] = faceAt(centroid, -1);
-        byFace[triangleFace[t]].push_back(tri);
         for(int k = 0; k < 3; k++) {
           MVertex *a = c[k], *b = c[(k + 1) % 3];
           _edges.insert(std::make_pair(std::min(a, b), std::max(a, b)));
         }
       }
+      // a face left without a triangle (a small part whose triangles all
+      // lie over its neighbours' input) takes back those it had, and so on
+      // if that empties another (a triangle back on its own face stays):
+      // no face of the model goes unmeshed
+      for(bool changed = true; changed;) {
+        changed = false;
+        std::vector<std::size_t> count(_g.faces.size(), 0);
+        for(int f : triangleFace) count[f]++;
+        for(std::size_t t = 0; t < triangleFace.size(); t++) {
+          const int origin = _m.triangleOrigin[t];
+          if(origin < 0 || count[oldFace[origin]] ||
+             triangleFace[t] == oldFace[origin])
+            continue;
+          triangleFace[t] = oldFace[origin];
+          changed = true;
+        }
+      }
+      std::vector<std::vector<MTriangle *> > byFace(_g.faces.size());
+      for(std::size_t t = 0; t < _m.triangles.size(); t++)
+        byFace[triangleFace[t]].push_back(triangles[t]);
       for(std::size_t t = 0; t < old.size(); t++)
         if(!kept[t]) delete old[t];
       for(std::size_t f = 0; f < _g.faces.size(); f++)
