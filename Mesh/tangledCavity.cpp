@@ -253,6 +253,20 @@ namespace {
 
   bool cavityMesher::remesh(int t, int &center)
   {
+    // where a fan's center may go: the kernel's centroid, else (a cavity
+    // curved too much for one plane: a strip narrower than the size rolled
+    // over a sharp bend) the input under the triangle's centroid and under
+    // its edges' midpoints
+    const std::vector<SPoint3> &x = _m.points;
+    const std::array<int, 3> &tri = _m.triangles[t];
+    std::vector<closestTriangleHit> others;
+    for(const SPoint3 &p : {(x[tri[0]] + x[tri[1]] + x[tri[2]]) * (1. / 3.),
+                            (x[tri[0]] + x[tri[1]]) * 0.5,
+                            (x[tri[1]] + x[tri[2]]) * 0.5,
+                            (x[tri[2]] + x[tri[0]]) * 0.5}) {
+      const closestTriangleHit hit = _onInput.closest(p);
+      if(hit.triangle >= 0) others.push_back(hit);
+    }
     for(bool wide : {true, false}) {
       cavity c;
       tangentFrame plane;
@@ -267,6 +281,11 @@ namespace {
         center = replace(c, nullptr, triangles);
         return true;
       }
+      for(const closestTriangleHit &other : others)
+        if(fan(c, other, triangles)) {
+          center = replace(c, &other, triangles);
+          return true;
+        }
     }
     return false;
   }
