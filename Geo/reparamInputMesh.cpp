@@ -13,6 +13,7 @@
 #include "MVertex.h"
 #include "SBoundingBox3d.h"
 #include "boundaryStitch.h"
+#include "meshFidelity.h"
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
@@ -57,6 +58,19 @@ namespace {
   }
 
   GFace *faceInCreation = nullptr;
+
+  // Faces whose planar mesh gave way to their input triangles after
+  // meshing (reparamMeshFaceWithItsInput), with the mesh that made: kept
+  // as input while that mesh is theirs
+  struct meshIdentity {
+    std::size_t elements = 0;
+    const MElement *first = nullptr;
+  };
+  std::map<const GFace *, meshIdentity> &inputMeshedFaces()
+  {
+    static std::map<const GFace *, meshIdentity> faces;
+    return faces;
+  }
 
   bool isFinite(const SPoint3 &p)
   {
@@ -195,7 +209,60 @@ bool reparamKeepInputMesh(GFace *gf)
   return true;
 }
 
-bool keptAsInput(const GFace *gf) { return keptFaces().count(gf) > 0; }
+bool keptAsInput(const GFace *gf)
+{
+  if(keptFaces().count(gf)) return true;
+  auto it = inputMeshedFaces().find(gf);
+  if(it == inputMeshedFaces().end()) return false;
+  GFace *f = const_cast<GFace *>(gf);
+  return f->getNumMeshElements() == it->second.elements &&
+         f->getNumMeshElements() && f->getMeshElement(0) == it->second.first;
+}
+
+bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
+{
+  if(!against || gf->stl_triangles.empty() || !gf->quadrangles.empty())
+    return false;
+  inputTriangulation input;
+  input.points = gf->stl_vertices_xyz;
+  for(std::size_t i = 0; i + 2 < gf->stl_triangles.size(); i += 3)
+    input.triangles.push_back({{gf->stl_triangles[i], gf->stl_triangles[i + 1],
+                                gf->stl_triangles[i + 2]}});
+  const std::vector<MVertex *> boundary = curveNodes(gf);
+  std::vector<SPoint3> boundaryPoints;
+  for(MVertex *v : boundary) boundaryPoints.push_back(v->point());
+  SBoundingBox3d box;
+  for(const SPoint3 &p : input.points) box += p;
+  const stitchedTriangulation stitched = stitchToBoundaryNodes(
+    input.points, input.triangles, boundaryPoints, 1e-6 * box.diag());
+  if(stitched.unplacedNodes || stitched.keptInputNodes ||
+     stitched.turnedTriangles || stitched.triangles.empty())
+    return false;
+  // no more triangles against the input than the planar mesh kept (where
+  // the input itself folds, the test finds its own triangles against it:
+  // pelvis_tlem2 has one such; the planar mesh would go to MeshAdapt,
+  // which left two)
+  surfaceMesh candidate;
+  candidate.points = input.points;
+  candidate.points.insert(candidate.points.end(), boundaryPoints.begin(),
+                          boundaryPoints.end());
+  candidate.triangles = stitched.triangles;
+  surfaceMesh in;
+  in.points = input.points;
+  in.triangles = input.triangles;
+  if(countInverted(in, candidate) > against) return false;
+  addTriangles(gf, input, stitched, boundary);
+  gf->meshStatistics.status = GFace::DONE;
+  gf->meshStatistics.nbTriangle = gf->triangles.size();
+  inputMeshedFaces()[gf] = {gf->getNumMeshElements(),
+                            gf->getMeshElement(0)};
+  Msg::Warning("Reparam: surface %d meshed with its %lu input triangles, "
+               "stitched to its curves: its planar mesh kept %lu triangles "
+               "against the input (a fold of the input, or a strip narrower "
+               "than the mesh size)",
+               gf->tag(), input.triangles.size(), against);
+  return true;
+}
 
 bool reparamMeshFromInput(GFace *gf)
 {

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <cstddef>
+
 class GFace;
 class GModel;
 
@@ -34,6 +36,12 @@ bool reparamKeepInputMesh(GFace *gf);
 // Called by discreteFace::mesh: meshes a face kept above with its input triangles,
 // stitched to the nodes of its curves' 1D meshes; false for other faces
 bool reparamMeshFromInput(GFace *gf);
+
+// Called when gf's planar mesh keeps `against` triangles pointing against
+// the input after every repair: meshes gf with its input triangles
+// stitched to its curves' nodes, with one warning, if that leaves no more
+// against the input (and turns none in the stitching); false otherwise
+bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against);
 
 // The faces of m meshed with their input triangles
 std::vector<int> facesKeptAsInput(GModel *m);

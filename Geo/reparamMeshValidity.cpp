@@ -8,6 +8,7 @@
 #include "closestTriangle.h"
 #include "invertedElementRepair.h"
 #include "meshFidelity.h"
+#include "reparamInputMesh.h"
 #include "reparamMeshValidity.h"
 #include "reparamOptimizeFace.h"
 #include "reparamReport.h"
@@ -101,7 +102,11 @@ bool reparamKeepPlanarMesh(GFace *gf)
     const optimizationRecord *o = findOptimization(gf);
     if(o && !o->againstAfter) return true;
   }
-  if(!repairInvertedTriangles(gf)) return true;
+  const std::size_t left = repairInvertedTriangles(gf);
+  if(!left) return true;
+  // across a strip narrower than the mesh size whose curve meshes cross:
+  // the input's own triangles, if they are better
+  if(reparamMeshFaceWithItsInput(gf, left)) return true;
   const std::size_t against = countElementsAgainstFaceNormals(gf);
   if(!against) return true;
   if(100 * against > gf->triangles.size()) return false;

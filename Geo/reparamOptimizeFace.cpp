@@ -9,6 +9,7 @@
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "reparamInputMesh.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeFace.h"
 #include "reparamOptions.h"
@@ -97,7 +98,7 @@ bool reparamOptimizeMeshedFace(GFace *gf)
      gf->geomType() != GEntity::DiscreteSurface || gf->triangles.empty() ||
      !gf->quadrangles.empty() || gf->stl_triangles.empty() ||
      gf->stl_vertices_uv.size() != gf->stl_vertices_xyz.size() ||
-     findOptimization(gf))
+     findOptimization(gf) || keptAsInput(gf))
     return false;
   const double t0 = TimeOfDay();
   // only the face's own nodes move: curves and points stay

@@ -218,16 +218,22 @@ def read_report(path):
     `surfaces` has one entry per discrete surface meshed (with or without
     elements); `unmeshedSurfaces` lists those without a parametrization,
     which the mesher skipped, and `inputKeptSurfaces` those meshed with
-    their input triangles by the safety net (Geo/reparamReportFormat.cpp)."""
+    their input triangles, by the safety net or after their planar mesh
+    (Geo/reparamReportFormat.cpp)."""
     try:
         with open(path) as f:
             report = json.load(f)
         surfaces = report["surfaces"]
-        kept = len(report.get("inputKeptSurfaces", []))
+        keptTags = set(report.get("inputKeptSurfaces", []))
+        kept = len(keptTags)
+        # the safety net's surfaces have no line of their own; a surface
+        # whose planar mesh gave way to its input after meshing has one
+        keptOnly = len(keptTags - set(s["surface"] for s in surfaces))
         return {
-            "meshed": kept
+            "meshed": keptOnly
             + sum(1 for s in surfaces if s["triangles"] + s["quadrangles"] > 0),
-            "surfaces": len(surfaces) + len(report["unmeshedSurfaces"]) + kept,
+            "surfaces": len(surfaces) + len(report["unmeshedSurfaces"])
+            + keptOnly,
             "kept": kept,
             "hausdorff": report["total"]["hausdorffPercent"],
             "inverted": report["total"]["inverted"],

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <gtest/gtest.h>
+#include "GFace.h"
 #include "GModel.h"
 #include "boundaryStitch.h"
 #include "gmsh.h"
@@ -144,4 +145,49 @@ TEST(boundaryStitch, loopsWithoutBoundaryNodesStayAsTheyAre)
                               SPoint3(1, 1, 0), SPoint3(0, 1, 0)},
                              1e-9);
   EXPECT_LT(st.triangles.size(), grid.triangles.size());
+}
+
+TEST(reparamInputMesh, aFaceMeshedGivesWayToItsInputWhenThatIsNoWorse)
+{
+  // a bumpy square remeshed by the recipe (one face, nothing against the
+  // input): its input triangles stitched to its curves replace its mesh
+  // when the planar mesh is said to keep one triangle against the input,
+  // never when it keeps none
+  testTriangulation t = rectangleGrid(10, 10, 1., 1.);
+  for(SPoint3 &p : t.points)
+    p = SPoint3(p.x(), p.y(), 0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
+  remeshWithRecipe(t, 0.05);
+  GFace *gf = nullptr;
+  for(auto it = GModel::current()->firstFace();
+      it != GModel::current()->lastFace(); ++it)
+    if(!(*it)->stl_triangles.empty()) gf = *it;
+  ASSERT_NE(gf, nullptr);
+  const std::size_t meshed = gf->triangles.size();
+  EXPECT_GT(meshed, 500u); // size 0.05 on the unit square
+  EXPECT_FALSE(reparamMeshFaceWithItsInput(gf, 0));
+  EXPECT_EQ(gf->triangles.size(), meshed);
+  EXPECT_FALSE(keptAsInput(gf));
+
+  EXPECT_TRUE(reparamMeshFaceWithItsInput(gf, 1));
+  EXPECT_TRUE(keptAsInput(gf));
+  EXPECT_EQ(facesKeptAsInput(GModel::current()).size(), 1u);
+  // the 200 input triangles, and one more for each curve node inserted on
+  // an input boundary edge (the input's own boundary nodes given up)
+  EXPECT_GE(gf->triangles.size(), 200u);
+  EXPECT_LT(gf->triangles.size(), meshed);
+  // whole: the free edges on the square's sides only
+  std::size_t nonManifold = 0;
+  int inside = 0;
+  for(const auto &e : freeMeshEdges(&nonManifold)) {
+    std::vector<double> p1, p2, par;
+    gmsh::model::mesh::getNode(e.first, p1, par);
+    gmsh::model::mesh::getNode(e.second, p2, par);
+    auto onSide = [](const std::vector<double> &p) {
+      return std::fabs(p[0]) < 1e-12 || std::fabs(p[0] - 1) < 1e-12 ||
+             std::fabs(p[1]) < 1e-12 || std::fabs(p[1] - 1) < 1e-12;
+    };
+    inside += !(onSide(p1) && onSide(p2));
+  }
+  EXPECT_EQ(nonManifold, 0u);
+  EXPECT_EQ(inside, 0);
 }
