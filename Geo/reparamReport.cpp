@@ -238,8 +238,7 @@ void reparamReportMeshedModel(GModel *m)
   if(!kept.empty()) {
     std::string list;
     for(int tag : kept) list += (list.empty() ? "" : ", ") + std::to_string(tag);
-    Msg::Info("Reparam: %lu surface%s meshed with their input triangles (no "
-              "parametrization): %s",
+    Msg::Info("Reparam: %lu surface%s meshed with their input triangles: %s",
               kept.size(), kept.size() > 1 ? "s" : "", list.c_str());
   }
   if(!missing.empty()) {
