@@ -20,6 +20,24 @@ namespace {
                    .norm();
   }
 
+  // The free edges of the current model's mesh not on the sides of the
+  // unit square (a gap inside), and its edges of three triangles or more
+  int freeEdgesOffTheUnitSquaresSides(std::size_t &nonManifold)
+  {
+    int inside = 0;
+    for(const auto &e : freeMeshEdges(&nonManifold)) {
+      std::vector<double> p1, p2, par;
+      gmsh::model::mesh::getNode(e.first, p1, par);
+      gmsh::model::mesh::getNode(e.second, p2, par);
+      auto onSide = [](const std::vector<double> &p) {
+        return std::fabs(p[0]) < 1e-12 || std::fabs(p[0] - 1) < 1e-12 ||
+               std::fabs(p[1]) < 1e-12 || std::fabs(p[1] - 1) < 1e-12;
+      };
+      inside += !(onSide(p1) && onSide(p2));
+    }
+    return inside;
+  }
+
 } // namespace
 
 TEST(boundaryStitch, inputBoundaryNodesGiveWayToTheCurvesNodes)
@@ -116,19 +134,8 @@ TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
   EXPECT_TRUE(surfacesWithoutElements().empty());
   // whole: no edge of three triangles, the only free edges on the sides
   std::size_t nonManifold = 0;
-  int inside = 0;
-  for(const auto &e : freeMeshEdges(&nonManifold)) {
-    std::vector<double> p1, p2, par;
-    gmsh::model::mesh::getNode(e.first, p1, par);
-    gmsh::model::mesh::getNode(e.second, p2, par);
-    auto onSide = [](const std::vector<double> &p) {
-      return std::fabs(p[0]) < 1e-12 || std::fabs(p[0] - 1) < 1e-12 ||
-             std::fabs(p[1]) < 1e-12 || std::fabs(p[1] - 1) < 1e-12;
-    };
-    inside += !(onSide(p1) && onSide(p2));
-  }
+  EXPECT_EQ(freeEdgesOffTheUnitSquaresSides(nonManifold), 0);
   EXPECT_EQ(nonManifold, 0u);
-  EXPECT_EQ(inside, 0);
 }
 
 TEST(boundaryStitch, loopsWithoutBoundaryNodesStayAsTheyAre)
@@ -177,17 +184,6 @@ TEST(reparamInputMesh, aFaceMeshedGivesWayToItsInputWhenThatIsNoWorse)
   EXPECT_LT(gf->triangles.size(), meshed);
   // whole: the free edges on the square's sides only
   std::size_t nonManifold = 0;
-  int inside = 0;
-  for(const auto &e : freeMeshEdges(&nonManifold)) {
-    std::vector<double> p1, p2, par;
-    gmsh::model::mesh::getNode(e.first, p1, par);
-    gmsh::model::mesh::getNode(e.second, p2, par);
-    auto onSide = [](const std::vector<double> &p) {
-      return std::fabs(p[0]) < 1e-12 || std::fabs(p[0] - 1) < 1e-12 ||
-             std::fabs(p[1]) < 1e-12 || std::fabs(p[1] - 1) < 1e-12;
-    };
-    inside += !(onSide(p1) && onSide(p2));
-  }
+  EXPECT_EQ(freeEdgesOffTheUnitSquaresSides(nonManifold), 0);
   EXPECT_EQ(nonManifold, 0u);
-  EXPECT_EQ(inside, 0);
 }
