@@ -254,8 +254,7 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
   addTriangles(gf, input, stitched, boundary);
   gf->meshStatistics.status = GFace::DONE;
   gf->meshStatistics.nbTriangle = gf->triangles.size();
-  inputMeshedFaces()[gf] = {gf->getNumMeshElements(),
-                            gf->getMeshElement(0)};
+  inputMeshedFaces()[gf] = {gf->getNumMeshElements(), gf->getMeshElement(0)};
   Msg::Warning("Reparam: surface %d meshed with its %lu input triangles, "
                "stitched to its curves: its planar mesh kept %lu triangles "
                "against the input (a fold of the input, or a strip narrower "
@@ -280,9 +279,9 @@ bool reparamMeshFromInput(GFace *gf)
   for(const SPoint3 &p : input.points) box += p;
   // the curves' nodes lie on the input's boundary edges to rounding
   const double tolerance = 1e-6 * box.diag();
-  stitchedTriangulation stitched = stitchToBoundaryNodes(
-    input.points, input.triangles, boundaryPoints, tolerance, input.labels,
-    boundaryLabels);
+  stitchedTriangulation stitched =
+    stitchToBoundaryNodes(input.points, input.triangles, boundaryPoints,
+                          tolerance, input.labels, boundaryLabels);
   addTriangles(gf, input, stitched, boundary);
   gf->meshStatistics.status = GFace::DONE;
   gf->meshStatistics.nbTriangle = gf->triangles.size();

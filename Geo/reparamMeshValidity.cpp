@@ -55,12 +55,11 @@ namespace {
     // ends the repair (the optimization after it counts again)
     const std::size_t budget = 20 * gf->triangles.size() + 1000;
     std::size_t used = 0;
-    invertedRepair repair =
-      splitInvertedTriangles(gf, [&](MTriangle *t) {
-        if(used >= budget) return false;
-        used++;
-        return raw(t) != reversed;
-      });
+    invertedRepair repair = splitInvertedTriangles(gf, [&](MTriangle *t) {
+      if(used >= budget) return false;
+      used++;
+      return raw(t) != reversed;
+    });
     if(used >= budget) {
       forgetOptimization(gf);
       Msg::Info("Reparam: surface %d: repair of the triangles against the "

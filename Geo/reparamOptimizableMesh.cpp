@@ -28,11 +28,12 @@ namespace {
 
 } // namespace
 
-optimizableMesh optimizableMeshOf(
-  const std::vector<GFace *> &faces, const std::vector<bool> &reverse,
-  const std::function<bool(const MVertex *)> &movable,
-  const std::vector<GEdge *> &lockedCurves, std::vector<MVertex *> &nodes,
-  std::vector<int> &triangleFace)
+optimizableMesh
+optimizableMeshOf(const std::vector<GFace *> &faces,
+                  const std::vector<bool> &reverse,
+                  const std::function<bool(const MVertex *)> &movable,
+                  const std::vector<GEdge *> &lockedCurves,
+                  std::vector<MVertex *> &nodes, std::vector<int> &triangleFace)
 {
   optimizableMesh m;
   std::unordered_map<MVertex *, int> index;
@@ -75,9 +76,9 @@ bool meshReversedOnInput(const GFace *gf, const surfaceMesh &input,
   std::size_t against = 0, tested = 0;
   for(std::size_t i = 0; i < triangles.size(); i += step, tested++) {
     MTriangle *t = triangles[i];
-    against += triangleAgainstInput(t->getVertex(0)->point(),
-                                    t->getVertex(1)->point(),
-                                    t->getVertex(2)->point(), input, onInput);
+    against +=
+      triangleAgainstInput(t->getVertex(0)->point(), t->getVertex(1)->point(),
+                           t->getVertex(2)->point(), input, onInput);
   }
   return 2 * against > tested;
 }

@@ -27,8 +27,7 @@ namespace {
   bool optimizable(GFace *gf)
   {
     const parametrizationRecord *map = findParametrization(gf);
-    return map && map->map > 0 &&
-           gf->geomType() == GEntity::DiscreteSurface &&
+    return map && map->map > 0 && gf->geomType() == GEntity::DiscreteSurface &&
            !gf->triangles.empty() && gf->quadrangles.empty() &&
            !gf->stl_triangles.empty() && !keptAsInput(gf);
   }
@@ -51,7 +50,8 @@ namespace {
       const int offset = (int)all.points.size();
       all.points.insert(all.points.end(), one.points.begin(), one.points.end());
       for(const std::array<int, 3> &t : one.triangles) {
-        all.triangles.push_back({{t[0] + offset, t[1] + offset, t[2] + offset}});
+        all.triangles.push_back(
+          {{t[0] + offset, t[1] + offset, t[2] + offset}});
         inputFace.push_back((int)f);
       }
     }
@@ -77,10 +77,10 @@ namespace {
       dropCrossedCurves();
       for(auto &e : _leaving) {
         std::vector<MVertex *> &own = e.first->mesh_vertices;
-        own.erase(std::remove_if(
-                    own.begin(), own.end(),
-                    [&](MVertex *v) { return e.second.count(v) > 0; }),
-                  own.end());
+        own.erase(
+          std::remove_if(own.begin(), own.end(),
+                         [&](MVertex *v) { return e.second.count(v) > 0; }),
+          own.end());
       }
       for(MVertex *v : _gone) delete v;
       return triangleFace;
@@ -221,9 +221,9 @@ namespace {
         bool followed = true;
         for(MLine *l : ge->lines) {
           MVertex *a = l->getVertex(0), *b = l->getVertex(1);
-          followed = followed && !_gone.count(a) && !_gone.count(b) &&
-                     _edges.count(std::make_pair(std::min(a, b),
-                                                 std::max(a, b)));
+          followed =
+            followed && !_gone.count(a) && !_gone.count(b) &&
+            _edges.count(std::make_pair(std::min(a, b), std::max(a, b)));
         }
         if(followed) continue;
         for(MLine *l : ge->lines) delete l;
@@ -247,7 +247,8 @@ namespace {
   // The faces' optimization records and reports, for their new meshes: the
   // group's counts go to its largest face, each face gets its own count of
   // triangles against the input
-  void recordGroup(const cutGroup &g, const std::vector<optimizationRecord> &before,
+  void recordGroup(const cutGroup &g,
+                   const std::vector<optimizationRecord> &before,
                    const meshOptimizationResult &r, const optimizableMesh &m,
                    const std::vector<int> &triangleFace, double seconds)
   {
@@ -276,6 +277,7 @@ namespace {
       o.againstAfter = against[f];
       o.reversed = false;
       o.acrossCuts = true;
+      o.countTaken = false;
       o.elements = gf->getNumMeshElements();
       o.firstElement = o.elements ? gf->getMeshElement(0) : nullptr;
       recordOptimization(gf, o);
@@ -404,8 +406,7 @@ std::vector<cutGroup> facesJoinedByCuts(GModel *m)
 int reparamOptimizeMeshedModel(GModel *m)
 {
   if(!getReparamOptions().optimize ||
-     getReparamOptions().parametrization ==
-       (int)compoundParametrization::gmsh)
+     getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;
   int changed = 0;
   for(const cutGroup &g : facesJoinedByCuts(m))

@@ -8,10 +8,10 @@
 // the per-face optimization (Geo/reparamOptimizeFace.h) cannot move a node
 // of them or flip an edge along them, where the conformal maps are most
 // distorted. Here the faces joined by smooth cuts (curves along no sharp,
-// border nor non-manifold input edge, Geo/reparamCurveMesh.h) are optimized together on
-// their input: cut nodes move off the cut (becoming nodes of the face whose
-// input they land on), edges along it flip, and each triangle goes to the
-// face whose input is under its centroid. A cut curve the mesh no longer
+// border nor non-manifold input edge, Geo/reparamCurveMesh.h) are optimized
+// together on their input: cut nodes move off the cut (becoming nodes of the
+// face whose input they land on), edges along it flip, and each triangle goes
+// to the face whose input is under its centroid. A cut curve the mesh no longer
 // follows keeps no 1D elements: the surface there is the feature patch the
 // cut parts came from.
 

@@ -55,8 +55,7 @@ std::size_t splitLongEdges(optimizableMesh &m, const surfaceMesh &input,
     // unchanged; no other shared mesh changed)
     const bool cutsOff =
       hit.distance > chordOffShare * m.points[a].distance(m.points[b]);
-    splits +=
-      split.splitEdge(t, k, hit.point, true, -1, cutsOff ? 0. : floor);
+    splits += split.splitEdge(t, k, hit.point, true, -1, cutsOff ? 0. : floor);
   }
   return splits;
 }

@@ -169,14 +169,14 @@ namespace {
                                   triangleKappa(x[q], x[b], x[p]));
     if(after < before + minimalGain) return false;
     if(against(x[a], x[q], x[p]) || against(x[q], x[b], x[p])) return false;
-    const double wasFar = std::max(
-      distanceToInput(centroidOf(x[a], x[b], x[p])),
-      std::max(distanceToInput(centroidOf(x[b], x[a], x[q])),
-               distanceToInput((x[a] + x[b]) * 0.5)));
-    const double far = std::max(
-      distanceToInput(centroidOf(x[a], x[q], x[p])),
-      std::max(distanceToInput(centroidOf(x[q], x[b], x[p])),
-               distanceToInput((x[p] + x[q]) * 0.5)));
+    const double wasFar =
+      std::max(distanceToInput(centroidOf(x[a], x[b], x[p])),
+               std::max(distanceToInput(centroidOf(x[b], x[a], x[q])),
+                        distanceToInput((x[a] + x[b]) * 0.5)));
+    const double far =
+      std::max(distanceToInput(centroidOf(x[a], x[q], x[p])),
+               std::max(distanceToInput(centroidOf(x[q], x[b], x[p])),
+                        distanceToInput((x[p] + x[q]) * 0.5)));
     if(far > wasFar + _o.tolerance * x[p].distance(x[q])) return false;
     replaceCorner(t, b, q); // (a, b, p) -> (a, q, p)
     replaceCorner(s, a, p); // (b, a, q) -> (b, p, q) = (q, b, p)
@@ -224,7 +224,8 @@ namespace {
     double worstKappa = 2.;
     for(int t : _around[v]) {
       const std::array<int, 3> &c = _m.triangles[t];
-      normal += crossprod(SVector3(x[c[0]], x[c[1]]), SVector3(x[c[0]], x[c[2]]));
+      normal +=
+        crossprod(SVector3(x[c[0]], x[c[1]]), SVector3(x[c[0]], x[c[2]]));
       const double k = kappa(t);
       if(k < worstKappa) {
         worstKappa = k;
@@ -284,9 +285,9 @@ namespace {
       SPoint3 c[3];
       cornersWith(_m.triangles[t], v, at, _m.points, c);
       if(against(c[0], c[1], c[2])) valid = false;
-      farthest = std::max(farthest,
-                          distanceToInput(centroidOf(c[0], c[1], c[2])) -
-                            _o.moveTolerance * longestEdge(c[0], c[1], c[2]));
+      farthest =
+        std::max(farthest, distanceToInput(centroidOf(c[0], c[1], c[2])) -
+                             _o.moveTolerance * longestEdge(c[0], c[1], c[2]));
     }
     return farthest;
   }
@@ -324,7 +325,8 @@ namespace {
     // every triangle around sees on the right side, in the input's tangent
     // plane, when there is one
     SPoint3 kernel;
-    if(before.first < 0. && starKernelPoint(v, kernel)) targets.push_back(kernel);
+    if(before.first < 0. && starKernelPoint(v, kernel))
+      targets.push_back(kernel);
     std::vector<std::pair<double, closestTriangleHit> > better;
     for(const SPoint3 &to : targets) {
       const closestTriangleHit hit = _onInput.closest(to);
@@ -403,8 +405,8 @@ double worstKappa(const optimizableMesh &m)
 {
   double worst = 1.;
   for(const std::array<int, 3> &t : m.triangles)
-    worst = std::min(worst, triangleKappa(m.points[t[0]], m.points[t[1]],
-                                          m.points[t[2]]));
+    worst = std::min(
+      worst, triangleKappa(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
   return worst;
 }
 
@@ -448,15 +450,14 @@ namespace {
 
   // Triangles of m below the target, and pointing against the input
   void countPoorTriangles(const optimizableMesh &m,
-                          const meshOptimizationOptions &o,
-                          std::size_t &below, std::size_t &against)
+                          const meshOptimizationOptions &o, std::size_t &below,
+                          std::size_t &against)
   {
     below = against = 0;
     for(std::size_t t = 0; t < m.triangles.size(); t++) {
       const std::array<int, 3> &c = m.triangles[t];
-      below +=
-        triangleKappa(m.points[c[0]], m.points[c[1]], m.points[c[2]]) <
-        o.target;
+      below += triangleKappa(m.points[c[0]], m.points[c[1]], m.points[c[2]]) <
+               o.target;
       against += m.against[t];
     }
   }
@@ -484,9 +485,9 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
   m.against.resize(m.triangles.size());
   for(std::size_t t = 0; t < m.triangles.size(); t++) {
     const std::array<int, 3> &c = m.triangles[t];
-    m.against[t] = triangleAgainstInput(m.points[c[0]], m.points[c[1]],
-                                        m.points[c[2]], input, onInput) !=
-                   o.reversed;
+    m.against[t] =
+      triangleAgainstInput(m.points[c[0]], m.points[c[1]], m.points[c[2]],
+                           input, onInput) != o.reversed;
   }
   r.minBefore = worstKappa(m);
   countPoorTriangles(m, o, r.belowBefore, r.againstBefore);

@@ -153,8 +153,7 @@ namespace {
     triangles.clear();
     for(std::size_t k = 0; k < c.loop.size(); k++) {
       const int a = c.loop[k], b = c.loop[(k + 1) % c.loop.size()];
-      if(!validTriangle(center.point, _m.points[a], _m.points[b]))
-        return false;
+      if(!validTriangle(center.point, _m.points[a], _m.points[b])) return false;
       triangles.push_back({{-1, a, b}});
     }
     return true;
@@ -203,8 +202,7 @@ namespace {
       todo.pop_back();
       if(s.second - s.first < 2) continue;
       const int k = split[s.first][s.second];
-      triangles.push_back(
-        {{c.loop[s.first], c.loop[k], c.loop[s.second]}});
+      triangles.push_back({{c.loop[s.first], c.loop[k], c.loop[s.second]}});
       todo.push_back(std::make_pair(s.first, k));
       todo.push_back(std::make_pair(k, s.second));
     }
@@ -260,10 +258,10 @@ namespace {
     const std::vector<SPoint3> &x = _m.points;
     const std::array<int, 3> &tri = _m.triangles[t];
     std::vector<closestTriangleHit> others;
-    for(const SPoint3 &p : {(x[tri[0]] + x[tri[1]] + x[tri[2]]) * (1. / 3.),
-                            (x[tri[0]] + x[tri[1]]) * 0.5,
-                            (x[tri[1]] + x[tri[2]]) * 0.5,
-                            (x[tri[2]] + x[tri[0]]) * 0.5}) {
+    for(const SPoint3 &p :
+        {(x[tri[0]] + x[tri[1]] + x[tri[2]]) * (1. / 3.),
+         (x[tri[0]] + x[tri[1]]) * 0.5, (x[tri[1]] + x[tri[2]]) * 0.5,
+         (x[tri[2]] + x[tri[0]]) * 0.5}) {
       const closestTriangleHit hit = _onInput.closest(p);
       if(hit.triangle >= 0) others.push_back(hit);
     }
@@ -321,8 +319,7 @@ bool kernelCentroid(const std::vector<std::array<double, 4> > &edges,
     for(int k : {0, 2})
       box = {{std::min(box[0], e[k]), std::min(box[1], e[k + 1]),
               std::max(box[2], e[k]), std::max(box[3], e[k + 1])}};
-  const std::vector<std::array<double, 2> > kernel =
-    starKernel(edges, box, 1);
+  const std::vector<std::array<double, 2> > kernel = starKernel(edges, box, 1);
   if(kernel.empty()) return false;
   centroid = {{0., 0.}};
   for(const auto &p : kernel) {
@@ -336,8 +333,7 @@ std::size_t remeshTangledCavities(optimizableMesh &m, const surfaceMesh &input,
                                   const closestTriangleSearch &onInput,
                                   bool reversed, std::vector<int> *centers)
 {
-  if(m.against.size() != m.triangles.size() ||
-     m.size.size() != m.points.size())
+  if(m.against.size() != m.triangles.size() || m.size.size() != m.points.size())
     return 0;
   std::vector<int> tangled;
   for(std::size_t t = 0; t < m.triangles.size(); t++)

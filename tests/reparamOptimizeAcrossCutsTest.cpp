@@ -32,8 +32,7 @@ namespace {
   // The unit sphere's longitude-latitude triangulation with its inner nodes
   // moved at random by up to `amount` of a grid step in longitude and
   // latitude: the layout's cut follows its edges in a zig-zag
-  testTriangulation jitteredSphere(int nLongitude, int nLatitude,
-                                   double amount)
+  testTriangulation jitteredSphere(int nLongitude, int nLatitude, double amount)
   {
     testTriangulation t = rectangleGrid(nLongitude, nLatitude, 1., 1.);
     for(SPoint3 &p : t.points) {
@@ -45,7 +44,8 @@ namespace {
       }
       const double phi =
         2. * M_PI * (p.x() + amount * noiseAt(i, j, 0) / nLongitude);
-      const double theta = M_PI * (p.y() + amount * noiseAt(i, j, 1) / nLatitude);
+      const double theta =
+        M_PI * (p.y() + amount * noiseAt(i, j, 1) / nLatitude);
       p = SPoint3(std::sin(theta) * std::cos(phi),
                   std::sin(theta) * std::sin(phi), -std::cos(theta));
     }
@@ -85,7 +85,8 @@ namespace {
     }
     for(auto it = m->firstFace(); it != m->lastFace(); ++it)
       for(MTriangle *t : (*it)->triangles) {
-        const SPoint3 a = t->getVertex(0)->point(), b = t->getVertex(1)->point(),
+        const SPoint3 a = t->getVertex(0)->point(),
+                      b = t->getVertex(1)->point(),
                       c = t->getVertex(2)->point();
         s.triangles++;
         s.worstKappa = std::min(s.worstKappa, triangleKappa(a, b, c));

@@ -77,9 +77,9 @@ TEST(tangledCavity, crossedNodesAreRemeshedAsAFan)
   ASSERT_GE(before, 2u); // the fold
   double areaBefore = 0.;
   for(const auto &t : m.triangles)
-    areaBefore += std::fabs(
-      crossprod(SVector3(m.points[t[0]], m.points[t[1]]),
-                SVector3(m.points[t[0]], m.points[t[2]])).z());
+    areaBefore += std::fabs(crossprod(SVector3(m.points[t[0]], m.points[t[1]]),
+                                      SVector3(m.points[t[0]], m.points[t[2]]))
+                              .z());
   std::vector<int> centers;
   const std::size_t cavities =
     remeshTangledCavities(m, input, onInput, false, &centers);
@@ -93,7 +93,8 @@ TEST(tangledCavity, crossedNodesAreRemeshedAsAFan)
     EXPECT_GT(triangleKappa(m.points[t[0]], m.points[t[1]], m.points[t[2]]),
               0.1);
     areaAfter += crossprod(SVector3(m.points[t[0]], m.points[t[1]]),
-                           SVector3(m.points[t[0]], m.points[t[2]])).z();
+                           SVector3(m.points[t[0]], m.points[t[2]]))
+                   .z();
   }
   // the square covered once (signed area 1, twice counted) and its border
   // (24 edges) alone used once
@@ -155,7 +156,8 @@ TEST(tangledCavity, aDartWithItsDiagonalOutsideIsRetriangulated)
   double area = 0.;
   for(const auto &t : m.triangles)
     area += crossprod(SVector3(m.points[t[0]], m.points[t[1]]),
-                      SVector3(m.points[t[0]], m.points[t[2]])).z();
+                      SVector3(m.points[t[0]], m.points[t[2]]))
+              .z();
   EXPECT_NEAR(area, 2.8, 1e-9);
   std::size_t border = 0;
   for(const auto &e : edgeUses(m)) border += e.second == 1;
