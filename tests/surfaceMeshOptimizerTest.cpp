@@ -129,6 +129,42 @@ TEST(surfaceMeshOptimizer, neverLowersTheWorstKappaNorLeavesTheInput)
   }
 }
 
+TEST(surfaceMeshOptimizer, aFoldIsRepairedLocallyTheRestUnchanged)
+{
+  // A 12 x 12 grid on the bump with two neighbouring inner nodes crossed
+  // over each other (a fold no flip nor single move undoes): the
+  // optimization leaves nothing against the input and changes nothing far
+  // from the fold (the grid's triangles are above the target kappa)
+  const testTriangulation input = bump(rectangleGrid(60, 60, 1., 1.));
+  const surfaceMesh in = asSurfaceMesh(input);
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  optimizableMesh m = optimizable(bump(rectangleGrid(12, 12, 1., 1.)));
+  for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+  const int a = 6 * 13 + 6, b = 6 * 13 + 7;
+  std::swap(m.points[a], m.points[b]);
+  const std::vector<SPoint3> before = m.points;
+  m.size.assign(m.points.size(), 1. / 12.);
+  meshOptimizationOptions o;
+  o.insertAbove = 0.;
+  const meshOptimizationResult r = optimizeOnInput(m, in, onInput, o);
+  EXPECT_GT(r.againstBefore, 0u);
+  EXPECT_EQ(r.againstAfter, 0u);
+  EXPECT_EQ(againstCount(m, in, onInput), 0u);
+  EXPECT_GT(r.minAfter, 0.1);
+  EXPECT_LT(largestDistance(m, onInput), 1e-9);
+  // every node kept more than 3 cells from the fold stays where it was
+  const SPoint3 fold = (before[a] + before[b]) * 0.5;
+  std::size_t far = 0, moved = 0;
+  for(std::size_t i = 0; i < m.points.size(); i++) {
+    const int origin = m.origin[i];
+    if(origin < 0 || before[origin].distance(fold) < 3. / 12.) continue;
+    far++;
+    moved += m.points[i].distance(before[origin]) > 1e-12;
+  }
+  EXPECT_GT(far, 120u);
+  EXPECT_EQ(moved, 0u);
+}
+
 TEST(surfaceMeshOptimizer, lockedEdgesAreNotFlipped)
 {
   // Two triangles over a quad whose diagonal makes a sliver: flipped when
