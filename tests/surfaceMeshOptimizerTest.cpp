@@ -61,6 +61,15 @@ namespace {
     return t;
   }
 
+  // An n x n grid of the unit square lifted on the bump, its nodes on the
+  // input triangulation (searched by onInput)
+  optimizableMesh bumpGridOnInput(int n, const closestTriangleSearch &onInput)
+  {
+    optimizableMesh m = optimizable(bump(rectangleGrid(n, n, 1., 1.)));
+    for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+    return m;
+  }
+
 } // namespace
 
 TEST(surfaceMeshOptimizer, slivers)
@@ -138,8 +147,7 @@ TEST(surfaceMeshOptimizer, aFoldIsRepairedLocallyTheRestUnchanged)
   const testTriangulation input = bump(rectangleGrid(60, 60, 1., 1.));
   const surfaceMesh in = asSurfaceMesh(input);
   const closestTriangleSearch onInput(in.points, in.triangles);
-  optimizableMesh m = optimizable(bump(rectangleGrid(12, 12, 1., 1.)));
-  for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+  optimizableMesh m = bumpGridOnInput(12, onInput);
   const int a = 6 * 13 + 6, b = 6 * 13 + 7;
   std::swap(m.points[a], m.points[b]);
   const std::vector<SPoint3> before = m.points;
@@ -327,8 +335,7 @@ TEST(surfaceMeshOptimizer, shortEdgesAreCollapsedKeepingTheMeshValid)
   const testTriangulation input = bump(rectangleGrid(60, 60, 1., 1.));
   const surfaceMesh in = asSurfaceMesh(input);
   const closestTriangleSearch onInput(in.points, in.triangles);
-  optimizableMesh m = optimizable(bump(rectangleGrid(12, 12, 1., 1.)));
-  for(SPoint3 &p : m.points) p = onInput.closest(p).point;
+  optimizableMesh m = bumpGridOnInput(12, onInput);
   const std::vector<SPoint3> before = m.points;
   const std::vector<bool> movable = m.movable;
   m.size.assign(m.points.size(), 2. / 12.);
