@@ -174,6 +174,36 @@ namespace {
     }
   }
 
+  // gf's input stitched to the nodes of its curves' 1D meshes (returned in
+  // `boundary`), told apart by curve where the input has labels
+  stitchedTriangulation stitchToCurves(GFace *gf,
+                                       const inputTriangulation &input,
+                                       std::vector<MVertex *> &boundary)
+  {
+    boundary = curveNodes(gf);
+    std::vector<SPoint3> points;
+    std::vector<std::vector<int> > labels;
+    for(MVertex *v : boundary) {
+      points.push_back(v->point());
+      if(!input.labels.empty()) labels.push_back(labelsOfNode(v));
+    }
+    SBoundingBox3d box;
+    for(const SPoint3 &p : input.points) box += p;
+    // the curves' nodes lie on the input's boundary edges to rounding
+    return stitchToBoundaryNodes(input.points, input.triangles, points,
+                                 1e-6 * box.diag(), input.labels, labels);
+  }
+
+  // gf's mesh: the stitched triangles (addTriangles), meshed
+  void meshWithStitched(GFace *gf, const inputTriangulation &input,
+                        const stitchedTriangulation &stitched,
+                        const std::vector<MVertex *> &boundary)
+  {
+    addTriangles(gf, input, stitched, boundary);
+    gf->meshStatistics.status = GFace::DONE;
+    gf->meshStatistics.nbTriangle = gf->triangles.size();
+  }
+
 } // namespace
 
 void reparamBeginFaceGeometry(GFace *gf)
@@ -223,18 +253,12 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
 {
   if(!against || gf->stl_triangles.empty() || !gf->quadrangles.empty())
     return false;
+  const surfaceMesh in = inputTriangulationOf(gf);
   inputTriangulation input;
-  input.points = gf->stl_vertices_xyz;
-  for(std::size_t i = 0; i + 2 < gf->stl_triangles.size(); i += 3)
-    input.triangles.push_back({{gf->stl_triangles[i], gf->stl_triangles[i + 1],
-                                gf->stl_triangles[i + 2]}});
-  const std::vector<MVertex *> boundary = curveNodes(gf);
-  std::vector<SPoint3> boundaryPoints;
-  for(MVertex *v : boundary) boundaryPoints.push_back(v->point());
-  SBoundingBox3d box;
-  for(const SPoint3 &p : input.points) box += p;
-  const stitchedTriangulation stitched = stitchToBoundaryNodes(
-    input.points, input.triangles, boundaryPoints, 1e-6 * box.diag());
+  input.points = in.points;
+  input.triangles = in.triangles;
+  std::vector<MVertex *> boundary;
+  const stitchedTriangulation stitched = stitchToCurves(gf, input, boundary);
   if(stitched.unplacedNodes || stitched.keptInputNodes ||
      stitched.turnedTriangles || stitched.triangles.empty())
     return false;
@@ -244,16 +268,10 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
   // which left two)
   surfaceMesh candidate;
   candidate.points = input.points;
-  candidate.points.insert(candidate.points.end(), boundaryPoints.begin(),
-                          boundaryPoints.end());
+  for(MVertex *v : boundary) candidate.points.push_back(v->point());
   candidate.triangles = stitched.triangles;
-  surfaceMesh in;
-  in.points = input.points;
-  in.triangles = input.triangles;
   if(countInverted(in, candidate) > against) return false;
-  addTriangles(gf, input, stitched, boundary);
-  gf->meshStatistics.status = GFace::DONE;
-  gf->meshStatistics.nbTriangle = gf->triangles.size();
+  meshWithStitched(gf, input, stitched, boundary);
   inputMeshedFaces()[gf] = {gf->getNumMeshElements(), gf->getMeshElement(0)};
   Msg::Warning("Reparam: surface %d meshed with its %lu input triangles, "
                "stitched to its curves: its planar mesh kept %lu triangles "
@@ -268,23 +286,9 @@ bool reparamMeshFromInput(GFace *gf)
   auto it = keptFaces().find(gf);
   if(it == keptFaces().end() || gf->haveParametrization()) return false;
   const inputTriangulation &input = it->second;
-  std::vector<MVertex *> boundary = curveNodes(gf);
-  std::vector<SPoint3> boundaryPoints;
-  std::vector<std::vector<int> > boundaryLabels;
-  for(MVertex *v : boundary) {
-    boundaryPoints.push_back(v->point());
-    boundaryLabels.push_back(labelsOfNode(v));
-  }
-  SBoundingBox3d box;
-  for(const SPoint3 &p : input.points) box += p;
-  // the curves' nodes lie on the input's boundary edges to rounding
-  const double tolerance = 1e-6 * box.diag();
-  stitchedTriangulation stitched =
-    stitchToBoundaryNodes(input.points, input.triangles, boundaryPoints,
-                          tolerance, input.labels, boundaryLabels);
-  addTriangles(gf, input, stitched, boundary);
-  gf->meshStatistics.status = GFace::DONE;
-  gf->meshStatistics.nbTriangle = gf->triangles.size();
+  std::vector<MVertex *> boundary;
+  const stitchedTriangulation stitched = stitchToCurves(gf, input, boundary);
+  meshWithStitched(gf, input, stitched, boundary);
   if(stitched.unplacedNodes || stitched.keptInputNodes)
     Msg::Info("Reparam: surface %d: %lu nodes of its curves off its input "
               "boundary, %lu input boundary nodes kept",

@@ -43,19 +43,10 @@ namespace {
   surfaceMesh inputOfFaces(const std::vector<GFace *> &faces,
                            std::vector<int> &inputFace)
   {
-    surfaceMesh all;
+    std::vector<surfaceMesh> inputs;
+    for(GFace *gf : faces) inputs.push_back(inputTriangulationOf(gf));
     inputFace.clear();
-    for(std::size_t f = 0; f < faces.size(); f++) {
-      const surfaceMesh one = inputTriangulationOf(faces[f]);
-      const int offset = (int)all.points.size();
-      all.points.insert(all.points.end(), one.points.begin(), one.points.end());
-      for(const std::array<int, 3> &t : one.triangles) {
-        all.triangles.push_back(
-          {{t[0] + offset, t[1] + offset, t[2] + offset}});
-        inputFace.push_back((int)f);
-      }
-    }
-    return all;
+    return unionAsTriangles(inputs, nullptr, &inputFace);
   }
 
   // Writes the optimized mesh of a group back into its faces and curves

@@ -165,30 +165,6 @@ namespace {
              back.sum / std::max<std::size_t>(1, back.samples));
   }
 
-  // The meshes as one (nodes repeated where faces meet: harmless for
-  // distances), quadrangles cut in two triangles; the mesh each node and
-  // element came from in `pointPart` and `elementPart`
-  surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes,
-                               std::vector<int> *pointPart = nullptr,
-                               std::vector<int> *elementPart = nullptr)
-  {
-    surfaceMesh u;
-    for(std::size_t i = 0; i < meshes.size(); i++) {
-      const surfaceMesh &m = meshes[i];
-      const int offset = (int)u.points.size();
-      u.points.insert(u.points.end(), m.points.begin(), m.points.end());
-      for(const auto &t : m.triangles)
-        u.triangles.push_back({{t[0] + offset, t[1] + offset, t[2] + offset}});
-      for(const auto &q : m.quadrangles) {
-        u.triangles.push_back({{q[0] + offset, q[1] + offset, q[2] + offset}});
-        u.triangles.push_back({{q[0] + offset, q[2] + offset, q[3] + offset}});
-      }
-      if(pointPart) pointPart->resize(u.points.size(), (int)i);
-      if(elementPart) elementPart->resize(u.triangles.size(), (int)i);
-    }
-    return u;
-  }
-
   // distances() with each sample counted for its part too
   oneSided distancesByPart(const surfaceMesh &from,
                            const std::vector<int> &pointPart,
@@ -299,4 +275,25 @@ std::vector<std::size_t> invertedElements(const surfaceMesh &input,
 std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output)
 {
   return invertedElements(input, output).size();
+}
+
+surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes,
+                             std::vector<int> *pointPart,
+                             std::vector<int> *elementPart)
+{
+  surfaceMesh u;
+  for(std::size_t i = 0; i < meshes.size(); i++) {
+    const surfaceMesh &m = meshes[i];
+    const int offset = (int)u.points.size();
+    u.points.insert(u.points.end(), m.points.begin(), m.points.end());
+    for(const auto &t : m.triangles)
+      u.triangles.push_back({{t[0] + offset, t[1] + offset, t[2] + offset}});
+    for(const auto &q : m.quadrangles) {
+      u.triangles.push_back({{q[0] + offset, q[1] + offset, q[2] + offset}});
+      u.triangles.push_back({{q[0] + offset, q[2] + offset, q[3] + offset}});
+    }
+    if(pointPart) pointPart->resize(u.points.size(), (int)i);
+    if(elementPart) elementPart->resize(u.triangles.size(), (int)i);
+  }
+  return u;
 }

@@ -46,6 +46,13 @@ struct meshFidelity {
   bool farthestOnInput = false;
 };
 
+// The meshes as one (nodes repeated where faces meet: harmless for
+// distances and orientation), quadrangles cut in two triangles; the mesh
+// each node and element came from in `pointPart` and `elementPart`
+surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes,
+                             std::vector<int> *pointPart = nullptr,
+                             std::vector<int> *elementPart = nullptr);
+
 // (knownInverted: meshFidelity::inverted as already counted, not searched)
 meshFidelity compareToInput(const surfaceMesh &input,
                             const surfaceMesh &output,

@@ -48,43 +48,23 @@
 
 namespace {
 
-  // The elements of the faces' meshes pointing against their inputs taken
-  // together (with REPARAM_BENCH_FACES, printed face by face)
+  // The elements of the triangle meshes of the faces pointing against
+  // their inputs taken together (with REPARAM_BENCH_FACES, printed face by
+  // face)
   std::size_t countInvertedTogether(const std::vector<GFace *> &faces)
   {
-    surfaceMesh input, output;
+    std::vector<surfaceMesh> inputs, outputs;
     for(GFace *gf : faces) {
-      for(surfaceMesh *m : {&input, &output}) {
-        const surfaceMesh one =
-          m == &input ? inputTriangulationOf(gf) : surfaceMeshOf(gf);
-        const int offset = (int)m->points.size();
-        m->points.insert(m->points.end(), one.points.begin(), one.points.end());
-        for(std::array<int, 3> t : one.triangles) {
-          for(int &v : t) v += offset;
-          m->triangles.push_back(t);
-        }
-        for(std::array<int, 4> q : one.quadrangles) {
-          for(int &v : q) v += offset;
-          m->quadrangles.push_back(q);
-        }
-      }
+      inputs.push_back(inputTriangulationOf(gf));
+      outputs.push_back(surfaceMeshOf(gf));
     }
-    const std::vector<std::size_t> against = invertedElements(input, output);
+    std::vector<int> elementFace;
+    const surfaceMesh output = unionAsTriangles(outputs, nullptr, &elementFace);
+    const std::vector<std::size_t> against =
+      invertedElements(unionAsTriangles(inputs), output);
     if(std::getenv("REPARAM_BENCH_FACES")) {
-      // element i: triangles of all faces first, then quadrangles
       std::vector<std::size_t> perFace(faces.size(), 0);
-      for(std::size_t e : against) {
-        std::size_t rest = e, f = 0;
-        const bool quad = e >= output.triangles.size();
-        if(quad) rest -= output.triangles.size();
-        for(; f < faces.size(); f++) {
-          const std::size_t n = quad ? faces[f]->quadrangles.size() :
-                                       faces[f]->triangles.size();
-          if(rest < n) break;
-          rest -= n;
-        }
-        if(f < faces.size()) perFace[f]++;
-      }
+      for(std::size_t e : against) perFace[elementFace[e]]++;
       for(std::size_t f = 0; f < faces.size(); f++)
         if(perFace[f])
           std::printf("face %d elements %lu inverted %lu input %lu\n",
@@ -97,7 +77,7 @@ namespace {
   // Each face against its own input, but the faces joined by crossed cuts
   // (Mesh.CompoundOptimize moves triangles across them) against their
   // inputs together
-  std::size_t countInverted(const std::vector<GFace *> &faces)
+  std::size_t countInvertedElements(const std::vector<GFace *> &faces)
   {
     std::set<GFace *> meshed(faces.begin(), faces.end()), grouped;
     std::size_t inverted = 0;
@@ -108,8 +88,15 @@ namespace {
       grouped.insert(members.begin(), members.end());
       inverted += countInvertedTogether(members);
     }
-    for(GFace *gf : faces)
-      if(!grouped.count(gf)) inverted += countInvertedTogether({gf});
+    for(GFace *gf : faces) {
+      if(grouped.count(gf)) continue;
+      const std::size_t n =
+        countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
+      if(n && std::getenv("REPARAM_BENCH_FACES"))
+        std::printf("face %d elements %lu inverted %lu input %lu\n", gf->tag(),
+                    gf->getNumMeshElements(), n, gf->stl_triangles.size() / 3);
+      inverted += n;
+    }
     return inverted;
   }
 
@@ -187,7 +174,7 @@ int main(int argc, char **argv)
     weightedMean += f.meanDistance * f.elements;
     weight += f.elements;
   }
-  inverted = countInverted(meshedFaces);
+  inverted = countInvertedElements(meshedFaces);
   // faces whose CreateGeometry failed: not meshed, holes in the mesh
   faces += unparametrizedFaces(GModel::current()).size();
   double diagonal = box.empty() ? 1. : box.diag();

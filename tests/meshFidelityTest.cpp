@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include "SVector3.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "testPatches.h"
@@ -178,4 +179,32 @@ TEST(meshFidelity, farthestPointIsWhereTheHausdorffDistanceIs)
   EXPECT_NEAR(f.hausdorff, 0.3, 1e-12);
   EXPECT_FALSE(f.farthestOnInput);
   EXPECT_NEAR(f.farthest.distance(SPoint3(1, 1, 0.3)), 0., 1e-12);
+}
+
+TEST(meshFidelity, unionKeepsEachPartsNodesAndElements)
+{
+  // a triangle and a unit square of one quadrangle: the union has their 7
+  // nodes (the shared ones repeated), the triangle and the quadrangle's two
+  // halves, each element and node tagged with its part, areas kept
+  surfaceMesh triangle, square;
+  triangle.points = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.),
+                     SPoint3(0., 1., 0.)};
+  triangle.triangles = {{{0, 1, 2}}};
+  square.points = {SPoint3(1., 0., 0.), SPoint3(2., 0., 0.),
+                   SPoint3(2., 1., 0.), SPoint3(1., 1., 0.)};
+  square.quadrangles = {{{0, 1, 2, 3}}};
+  std::vector<int> pointPart, elementPart;
+  const surfaceMesh u =
+    unionAsTriangles({triangle, square}, &pointPart, &elementPart);
+  ASSERT_EQ(u.points.size(), 7u);
+  ASSERT_EQ(u.triangles.size(), 3u);
+  EXPECT_EQ(pointPart, std::vector<int>({0, 0, 0, 1, 1, 1, 1}));
+  EXPECT_EQ(elementPart, std::vector<int>({0, 1, 1}));
+  double area = 0.;
+  for(const auto &t : u.triangles)
+    area += 0.5 * crossprod(SVector3(u.points[t[0]], u.points[t[1]]),
+                            SVector3(u.points[t[0]], u.points[t[2]]))
+                    .z();
+  EXPECT_NEAR(area, 1.5, 1e-15); // all turned the same way
+  EXPECT_TRUE(u.quadrangles.empty());
 }
