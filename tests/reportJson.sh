@@ -10,6 +10,12 @@ src=$2
 work=$3
 mkdir -p "$work"
 check() {
+  if [ ! -f "$1" ]; then
+    # say why rather than a Python traceback: the log's end
+    echo "no report written to $1; the end of $2:"
+    tail -n 40 "$2"
+    return 1
+  fi
   python3 - "$1" "$2" "$3" <<'PY'
 import json, sys
 report = json.load(open(sys.argv[1]))
