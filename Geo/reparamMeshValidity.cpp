@@ -1,14 +1,20 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include <cstdio>
+#include <map>
+#include <string>
+#include "GEdge.h"
 #include "GFace.h"
 #include "GmshMessage.h"
+#include "MLine.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "closestTriangle.h"
 #include "invertedElementRepair.h"
 #include "meshFidelity.h"
 #include "reparamInputMesh.h"
+#include "reparamMesherFallback.h"
 #include "reparamMeshValidity.h"
 #include "reparamOptimizeFace.h"
 #include "reparamReport.h"
@@ -76,6 +82,22 @@ namespace {
                 "passes",
                 gf->tag(), repair.before, repair.after, repair.changes,
                 repair.moves, repair.passes);
+    if(repair.after && Msg::GetVerbosity() > 98)
+      for(MTriangle *t : gf->triangles)
+        if(raw(t) != reversed) {
+          const SPoint3 c = t->barycenter();
+          std::string corners;
+          for(int k = 0; k < 3; k++) {
+            const MVertex *v = t->getVertex(k);
+            char text[128];
+            snprintf(text, sizeof(text), " (%g, %g, %g) on %d %d", v->x(),
+                     v->y(), v->z(), v->onWhat()->dim(), v->onWhat()->tag());
+            corners += text;
+          }
+          Msg::Debug("Reparam: surface %d: triangle against the input at "
+                     "(%g, %g, %g), corners (on entity dimension, tag)%s",
+                     gf->tag(), c.x(), c.y(), c.z(), corners.c_str());
+        }
     return repair.after;
   }
 
@@ -88,6 +110,8 @@ bool reparamKeepPlanarMesh(GFace *gf)
   if(!record || record->map <= 0 || gf->triangles.empty() ||
      !gf->quadrangles.empty())
     return false;
+  // a mesh tried in place of another: compared there
+  if(reparamTryingOtherMesher()) return true;
   // None against the input under it (the report's test, which samples the
   // input at the centroid and halfway to the corners) or none against the
   // normals at the nodes (Gmsh's test): kept. MeshAdapt would only cross
@@ -97,12 +121,21 @@ bool reparamKeepPlanarMesh(GFace *gf)
   // the others it optimizes (Geo/reparamOptimizeFace.cpp): when none is
   // left, the mesh is kept without a second search of the input under
   // every triangle
-  if(reparamOptimizeMeshedFace(gf)) {
-    const optimizationRecord *o = findOptimization(gf);
-    if(o && !o->againstAfter) return true;
-  }
+  reparamOptimizeMeshedFace(gf);
+  const optimizationRecord *o = findOptimization(gf);
+  if(o && !o->againstAfter) return true;
   const std::size_t left = repairInvertedTriangles(gf);
   if(!left) return true;
+  // MeshAdapt, for this face only, where it leaves fewer
+  meshDefects defects;
+  defects.againstInput = left;
+  if(reparamTryOtherMesher(gf, defects)) {
+    // some still: the input's own triangles if they have fewer; in any
+    // case not MeshAdapt
+    const std::size_t after = countTrianglesAgainstInput(gf);
+    if(after) reparamMeshFaceWithItsInput(gf, after);
+    return true;
+  }
   // across a strip narrower than the mesh size whose curve meshes cross:
   // the input's own triangles, if they are better
   if(reparamMeshFaceWithItsInput(gf, left)) return true;
@@ -112,5 +145,54 @@ bool reparamKeepPlanarMesh(GFace *gf)
   Msg::Info("Reparam: surface %d: mesh kept with %lu of its %lu elements "
             "against the normals at their nodes (no MeshAdapt remesh)",
             gf->tag(), against, gf->triangles.size());
+  return true;
+}
+
+std::size_t countUnusedCurveSegments(GFace *gf)
+{
+  // how many times each curve bounds gf: a curve listed twice is a slit
+  std::map<GEdge *, int> bounds;
+  for(GEdge *ge : gf->edges()) bounds[ge]++;
+  for(GEdge *ge : gf->embeddedEdges()) bounds[ge] += 2;
+  typedef std::pair<MVertex *, MVertex *> segment;
+  auto key = [](MVertex *a, MVertex *b) {
+    return a < b ? segment(a, b) : segment(b, a);
+  };
+  std::map<segment, int> expected;
+  for(const auto &b : bounds)
+    for(MLine *l : b.first->lines)
+      expected[key(l->getVertex(0), l->getVertex(1))] += b.second;
+  std::map<segment, int> used;
+  for(MTriangle *t : gf->triangles)
+    for(int k = 0; k < 3; k++) {
+      auto it = expected.find(key(t->getVertex(k), t->getVertex((k + 1) % 3)));
+      if(it != expected.end()) used[it->first]++;
+    }
+  std::size_t unused = 0;
+  for(const auto &e : expected) {
+    auto it = used.find(e.first);
+    if(it == used.end() || it->second < e.second) unused++;
+  }
+  return unused;
+}
+
+bool reparamPlanarMeshLeavesHole(GFace *gf)
+{
+  const parametrizationRecord *record = findParametrization(gf);
+  if(!record || record->map <= 0 || gf->triangles.empty() ||
+     !gf->quadrangles.empty())
+    return false;
+  if(reparamTryingOtherMesher()) return false;
+  meshDefects defects;
+  defects.unusedCurveSegments = countUnusedCurveSegments(gf);
+  if(!defects.unusedCurveSegments) return false;
+  defects.againstInput = (std::size_t)-1; // any whole mesh is better
+  Msg::Info("Reparam: surface %d: the planar mesh leaves %lu segment%s of "
+            "its curves unused (a hole)",
+            gf->tag(), defects.unusedCurveSegments,
+            defects.unusedCurveSegments > 1 ? "s" : "");
+  if(reparamTryOtherMesher(gf, defects) && !countUnusedCurveSegments(gf))
+    return false;
+  Msg::Info("Reparam: surface %d: remeshed with MeshAdapt", gf->tag());
   return true;
 }

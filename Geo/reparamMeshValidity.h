@@ -23,8 +23,22 @@ std::size_t countElementsAgainstFaceNormals(GFace *gf);
 // For a discrete face Reparam parametrized (else false, and Gmsh's test
 // decides): first optimizes it (Mesh.CompoundOptimize, which turns back the
 // triangles pointing against the input), then splits the edges of those
-// left (Mesh/invertedElementRepair), then true if none is left, or if at
-// most 1 % of the elements fail Gmsh's test: the mesh is kept (logged)
+// left (Mesh/invertedElementRepair), then true if none is left; else tries
+// the other planar mesher (Geo/reparamMesherFallback.h), then the input's
+// own triangles (Geo/reparamInputMesh.h); true if at most 1 % of the
+// elements fail Gmsh's test: the mesh is kept (logged)
 bool reparamKeepPlanarMesh(GFace *gf);
+
+// The segments of gf's curves its triangles use fewer times than the curve
+// bounds it (once; twice for a curve on both sides, a slit, and for an
+// embedded curve)
+std::size_t countUnusedCurveSegments(GFace *gf);
+
+// For a discrete face Reparam parametrized: whether its planar mesh leaves
+// a segment of its curves unused, a hole at it (Frontal-Delaunay across a
+// slit: a curve gmsh2x_car_body's face 7 has on both sides), after the
+// other planar mesher was tried (Geo/reparamMesherFallback.h); logged, and
+// Gmsh remeshes it with MeshAdapt
+bool reparamPlanarMeshLeavesHole(GFace *gf);
 
 #endif

@@ -102,6 +102,20 @@ double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
   return o.noiseSize;
 }
 
+double opt_mesh_compound_mesh_size_gradient(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) {
+    if(!(val >= 0.) || !std::isfinite(val))
+      Msg::Error("Mesh.CompoundMeshSizeGradient must be >= 0 (got %g): "
+                 "keeping %g",
+                 val, o.meshSizeGradient);
+    else
+      o.meshSizeGradient = val;
+  }
+  return o.meshSizeGradient;
+}
+
 double opt_mesh_compound_report(OPT_ARGS_NUM)
 {
   return onOffOption(getReparamOptions().report, action, val);

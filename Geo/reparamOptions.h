@@ -43,6 +43,11 @@ struct reparamOptions {
   // moves around its poor triangles); 2: also its short edges collapsed;
   // 0: none
   int optimize = 1;
+  // Mesh.CompoundMeshSizeGradient: where sizes extend from the boundary,
+  // the size of a short boundary segment grows by this much per unit
+  // distance into the face (Geo/reparamSizeGrading.cpp); 0: Gmsh's linear
+  // interpolation of the boundary sizes
+  double meshSizeGradient = 0.5;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none

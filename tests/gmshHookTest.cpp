@@ -262,9 +262,10 @@ TEST(gmshHook, everyMapRemeshesTheTutorialWithItsHolesFilled)
   for(int choice : {1, 2, 3, 4, 5}) {
     std::vector<std::string> log;
     std::size_t triangles = remeshDome(choice, &log);
-    // measured: 3413 (Tutte) to 3619 (LSCM)
-    EXPECT_GT(triangles, 3300u) << choice;
-    EXPECT_LT(triangles, 3750u) << choice;
+    // measured: 3219 to 3269 (3413 to 3619 with Gmsh's interpolation of
+    // the sizes of the curves' segments, Mesh.CompoundMeshSizeGradient = 0)
+    EXPECT_GT(triangles, 3100u) << choice;
+    EXPECT_LT(triangles, 3450u) << choice;
     EXPECT_TRUE(contains(log, "2 holes (2 filled)")) << choice;
     EXPECT_FALSE(contains(log, "Error")) << choice;
   }

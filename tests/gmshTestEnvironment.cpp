@@ -37,8 +37,8 @@ gmshTriangulation::gmshTriangulation(const testTriangulation &t)
   for(const auto &p : t.points)
     vertices.push_back(new MVertex(p.x(), p.y(), p.z()));
   for(const auto &tri : t.triangles)
-    triangles.push_back(new MTriangle(vertices[tri[0]], vertices[tri[1]],
-                                      vertices[tri[2]]));
+    triangles.push_back(
+      new MTriangle(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]));
 }
 
 gmshTriangulation::~gmshTriangulation()
@@ -157,4 +157,64 @@ std::vector<int> surfacesWithoutElements()
     if(tags.empty()) empty.push_back(f.second);
   }
   return empty;
+}
+
+void squareWithAShortCurve()
+{
+  gmsh::clear();
+  std::vector<double> xs = {0., 0.02};
+  for(int i = 1; i <= 40; i++) xs.push_back(0.025 * i);
+  const int nx = xs.size(), ny = 41;
+  auto tag = [&](int i, int j) { return (std::size_t)(j * nx + i + 1); };
+  auto xyz = [&](int i, int j) {
+    return std::vector<double>{xs[i], 0.025 * j, 0.};
+  };
+  const int corners[5][2] = {
+    {0, 0}, {1, 0}, {nx - 1, 0}, {nx - 1, ny - 1}, {0, ny - 1}};
+  for(int p = 0; p < 5; p++) {
+    gmsh::model::addDiscreteEntity(0, p + 1);
+    const int i = corners[p][0], j = corners[p][1];
+    gmsh::model::mesh::addNodes(0, p + 1, {tag(i, j)}, xyz(i, j));
+  }
+  // each side as the grid nodes from one corner to the next
+  for(int c = 0; c < 5; c++) {
+    const int *a = corners[c], *b = corners[(c + 1) % 5];
+    gmsh::model::addDiscreteEntity(1, c + 1, {c + 1, (c + 1) % 5 + 1});
+    std::vector<std::size_t> path, inner;
+    std::vector<double> coords;
+    const int steps = std::abs(b[0] - a[0]) + std::abs(b[1] - a[1]);
+    for(int s = 0; s <= steps; s++) {
+      const int i = a[0] + (b[0] > a[0] ? s : b[0] < a[0] ? -s : 0);
+      const int j = a[1] + (b[1] > a[1] ? s : b[1] < a[1] ? -s : 0);
+      path.push_back(tag(i, j));
+      if(s == 0 || s == steps) continue;
+      inner.push_back(tag(i, j));
+      for(double x : xyz(i, j)) coords.push_back(x);
+    }
+    gmsh::model::mesh::addNodes(1, c + 1, inner, coords);
+    std::vector<std::size_t> lines;
+    for(std::size_t s = 0; s + 1 < path.size(); s++) {
+      lines.push_back(path[s]);
+      lines.push_back(path[s + 1]);
+    }
+    gmsh::model::mesh::addElementsByType(c + 1, 1, {}, lines);
+  }
+  gmsh::model::addDiscreteEntity(2, 1, {1, 2, 3, 4, 5});
+  std::vector<std::size_t> inner, triangles;
+  std::vector<double> coords;
+  for(int j = 1; j + 1 < ny; j++)
+    for(int i = 1; i + 1 < nx; i++) {
+      inner.push_back(tag(i, j));
+      for(double x : xyz(i, j)) coords.push_back(x);
+    }
+  gmsh::model::mesh::addNodes(2, 1, inner, coords);
+  for(int j = 0; j + 1 < ny; j++)
+    for(int i = 0; i + 1 < nx; i++) {
+      for(std::size_t n : {tag(i, j), tag(i + 1, j), tag(i + 1, j + 1)})
+        triangles.push_back(n);
+      for(std::size_t n : {tag(i, j), tag(i + 1, j + 1), tag(i, j + 1)})
+        triangles.push_back(n);
+    }
+  gmsh::model::mesh::addElementsByType(1, 2, {}, triangles);
+  gmsh::model::mesh::createGeometry();
 }

@@ -53,7 +53,13 @@ std::vector<int> surfacesWithoutElements();
 
 // The edges of the current model's surface triangles used by one triangle
 // only (node tags, smaller first), and by more than two
-std::vector<std::pair<std::size_t, std::size_t> > freeMeshEdges(
-  std::size_t *nonManifold = nullptr);
+std::vector<std::pair<std::size_t, std::size_t> >
+freeMeshEdges(std::size_t *nonManifold = nullptr);
+
+// A cleared model with the unit square as a discrete surface on a grid of
+// 0.025, its bottom side cut by a model point 0.02 from the corner (a short
+// curve, as the layout leaves between close corners), through
+// CreateGeometry
+void squareWithAShortCurve();
 
 #endif

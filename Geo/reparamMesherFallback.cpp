@@ -1,0 +1,110 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include "GFace.h"
+#include "GmshDefines.h"
+#include "GmshMessage.h"
+#include "MTriangle.h"
+#include "MVertex.h"
+#include "meshFidelity.h"
+#include "meshGFace.h"
+#include "reparamMeshValidity.h"
+#include "reparamMesherFallback.h"
+#include "reparamOptimizeFace.h"
+#include "reparamReport.h"
+
+namespace {
+
+  thread_local bool trying = false;
+
+  // A face's mesh taken out of it (Gmsh's mesher deletes what the face
+  // holds)
+  struct detachedMesh {
+    std::vector<MTriangle *> triangles;
+    std::vector<MVertex *> nodes;
+  };
+
+  detachedMesh detach(GFace *gf)
+  {
+    detachedMesh m;
+    m.triangles.swap(gf->triangles);
+    m.nodes.swap(gf->mesh_vertices);
+    gf->deleteVertexArrays();
+    return m;
+  }
+
+  void destroy(detachedMesh &m)
+  {
+    for(MTriangle *t : m.triangles) delete t;
+    for(MVertex *v : m.nodes) delete v;
+    m = detachedMesh();
+  }
+
+  // gf's mesh replaced by m
+  void attach(GFace *gf, detachedMesh &m)
+  {
+    gf->deleteMesh();
+    gf->triangles.swap(m.triangles);
+    gf->mesh_vertices.swap(m.nodes);
+    gf->meshStatistics.status = GFace::DONE;
+  }
+
+  const char *algorithmName(int algorithm)
+  {
+    return algorithm == ALGO_2D_DELAUNAY ? "Delaunay" : "Frontal-Delaunay";
+  }
+
+  std::string defectsText(const meshDefects &d)
+  {
+    std::string text;
+    if(d.unusedCurveSegments)
+      text = std::to_string(d.unusedCurveSegments) +
+             " segments of its curves unused, ";
+    if(d.againstInput == (std::size_t)-1)
+      text += "triangles against the input not counted";
+    else
+      text += std::to_string(d.againstInput) + " triangles against the input";
+    return text;
+  }
+
+} // namespace
+
+bool reparamTryingOtherMesher() { return trying; }
+
+std::size_t countTrianglesAgainstInput(GFace *gf)
+{
+  const optimizationRecord *o = findOptimization(gf);
+  if(o) return o->againstAfter;
+  const std::size_t raw =
+    countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
+  return std::min(raw, gf->triangles.size() - raw);
+}
+
+bool reparamTryOtherMesher(GFace *gf, const meshDefects &current)
+{
+  if(!gf->quadrangles.empty()) return false;
+  const int other = gf->getMeshingAlgo() == ALGO_2D_DELAUNAY ? ALGO_2D_FRONTAL :
+                                                               ALGO_2D_DELAUNAY;
+  detachedMesh kept = detach(gf);
+  trying = true;
+  gf->setMeshingAlgo(other);
+  meshGFace()(gf, false);
+  gf->unsetMeshingAlgo();
+  trying = false;
+  reparamOptimizeMeshedFace(gf);
+  meshDefects found;
+  found.unusedCurveSegments = countUnusedCurveSegments(gf);
+  found.againstInput = countTrianglesAgainstInput(gf);
+  if(!gf->triangles.empty() && found < current) {
+    destroy(kept);
+    Msg::Info("Reparam: surface %d: remeshed with %s: %s -> %s", gf->tag(),
+              algorithmName(other), defectsText(current).c_str(),
+              defectsText(found).c_str());
+    return true;
+  }
+  forgetOptimization(gf);
+  attach(gf, kept);
+  Msg::Info("Reparam: surface %d: %s left %s: mesh kept", gf->tag(),
+            algorithmName(other), defectsText(found).c_str());
+  return false;
+}

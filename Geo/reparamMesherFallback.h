@@ -1,0 +1,45 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// A face whose Delaunay or Frontal-Delaunay mesh leaves a hole, or keeps
+// triangles against the input after the local repairs, gets a mesh from the
+// other of the two, kept when it has fewer defects. Gmsh remeshes every
+// such face with MeshAdapt, some 10 times slower (35 s on a 17 000-triangle
+// face of camelhead, 26 s on a 3 000-triangle face of adis16480) and no
+// better there: adis16480's face 2 kept 1 triangle against the input with
+// Frontal-Delaunay, 2 with MeshAdapt, 0 with Delaunay.
+
+#ifndef REPARAM_MESHER_FALLBACK_H
+#define REPARAM_MESHER_FALLBACK_H
+
+#include <cstddef>
+
+class GFace;
+
+// What is wrong with a face's mesh, worst first
+struct meshDefects {
+  std::size_t unusedCurveSegments = 0; // holes
+  std::size_t againstInput = 0;
+  bool operator<(const meshDefects &o) const
+  {
+    return unusedCurveSegments != o.unusedCurveSegments ?
+             unusedCurveSegments < o.unusedCurveSegments :
+             againstInput < o.againstInput;
+  }
+};
+
+// gf's triangles against its input, counted against the orientation most
+// of them have: the optimizer's count when it optimized the current mesh,
+// else searched
+std::size_t countTrianglesAgainstInput(GFace *gf);
+
+// Meshes gf (Reparam parametrized, its current mesh with the defects
+// `current`) with Delaunay, or Frontal-Delaunay if that was Delaunay, then
+// optimizes it (Mesh.CompoundOptimize); keeps that mesh and returns true if
+// it has fewer defects, else puts the current mesh back (both logged)
+bool reparamTryOtherMesher(GFace *gf, const meshDefects &current);
+
+// Whether this thread is meshing a face for reparamTryOtherMesher: the
+// validity hook leaves the comparison to it
+bool reparamTryingOtherMesher();
+
+#endif

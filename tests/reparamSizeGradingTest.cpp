@@ -1,0 +1,115 @@
+// Reparam - the sizes of a discrete face's short boundary segments graded
+// into it (Mesh.CompoundMeshSizeGradient) instead of Gmsh's interpolation
+// over the whole face
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include "BackgroundMeshTools.h"
+#include "GFace.h"
+#include "GModel.h"
+#include "MTriangle.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
+#include "gradedBoundarySize.h"
+#include "reparamSizeGrading.h"
+#include "triangleQuality.h"
+
+TEST(gradedBoundarySize, sizeGrowsWithTheDistanceToTheSmallestNode)
+{
+  const gradedBoundarySize size({SPoint3(0, 0, 0), SPoint3(1, 0, 0)},
+                                {0.02, 0.05}, 0.3);
+  EXPECT_NEAR(size(SPoint3(0, 0, 0), 0.1), 0.02, 1e-12);
+  EXPECT_NEAR(size(SPoint3(0, 0.1, 0), 0.1), 0.02 + 0.03, 1e-12);
+  // nearer the larger node, its size wins
+  EXPECT_NEAR(size(SPoint3(1, 0.05, 0), 0.1), 0.05 + 0.015, 1e-12);
+  // far from both: the bound
+  EXPECT_NEAR(size(SPoint3(0.5, 3, 0), 0.1), 0.1, 1e-12);
+  EXPECT_EQ(size.size(), 2u);
+}
+
+TEST(gradedBoundarySize, shortestSegmentAtEachNode)
+{
+  const std::vector<SPoint3> nodes = {SPoint3(0, 0, 0), SPoint3(0.02, 0, 0),
+                                      SPoint3(0.2, 0, 0), SPoint3(5, 5, 5)};
+  const std::vector<double> l = shortestSegmentAtNodes(nodes, {{0, 1}, {1, 2}});
+  ASSERT_EQ(l.size(), 4u);
+  EXPECT_NEAR(l[0], 0.02, 1e-12);
+  EXPECT_NEAR(l[1], 0.02, 1e-12);
+  EXPECT_NEAR(l[2], 0.18, 1e-12);
+  EXPECT_EQ(l[3], 0.); // no segment
+}
+
+namespace {
+
+  struct meshedSquare {
+    std::size_t triangles = 0;
+    double worstKappa = 1.;
+  };
+
+  meshedSquare meshSquare(double gradient, double size)
+  {
+    squareWithAShortCurve();
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+    gmsh::model::mesh::generate(2);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+    meshedSquare r;
+    GFace *gf = GModel::current()->getFaceByTag(1);
+    for(MTriangle *t : gf->triangles) {
+      r.triangles++;
+      r.worstKappa =
+        std::min(r.worstKappa, triangleKappa(t->getVertex(0)->point(),
+                                             t->getVertex(1)->point(),
+                                             t->getVertex(2)->point()));
+    }
+    return r;
+  }
+
+} // namespace
+
+TEST(reparamSizeGrading, theFaceSizesGrowAwayFromAShortCurve)
+{
+  squareWithAShortCurve();
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+  gmsh::model::mesh::generate(1);
+  GFace *gf = GModel::current()->getFaceByTag(1);
+  ASSERT_TRUE(gf);
+  auto size = [gf](double x, double y) {
+    return BGM_MeshSize(gf, 0., 0., x, y, 0.);
+  };
+  EXPECT_NEAR(size(0.01, 0.1), 0.1, 1e-12); // not while not meshing
+  reparamBeginSizeGrading(gf);
+  EXPECT_EQ(gf->getMeshSizeFromBoundary(), 0); // Gmsh's extension off
+  // the short curve has 2 segments of 0.01 (Gmsh's Mesh.MinimumCurveNodes)
+  EXPECT_NEAR(size(0., 0.), 0.01, 1e-9);
+  // 0.1 above its middle node
+  EXPECT_NEAR(size(0.01, 0.1), 0.01 + 0.5 * 0.1, 1e-9);
+  EXPECT_NEAR(size(0.5, 0.5), 0.1, 1e-12);
+  // other entities keep theirs
+  GEdge *ge = GModel::current()->getEdgeByTag(2);
+  EXPECT_NEAR(BGM_MeshSize(ge, 0., 0., 0.01, 0., 0.), 0.1, 1e-12);
+  reparamEndSizeGrading(gf);
+  EXPECT_EQ(gf->getMeshSizeFromBoundary(), 1);
+  EXPECT_NEAR(size(0.01, 0.1), 0.1, 1e-12);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+}
+
+TEST(reparamSizeGrading, aShortCurveGetsAGradedMeshOfTheSizeAsked)
+{
+  const meshedSquare interpolated = meshSquare(0., 0.05);
+  const meshedSquare graded = meshSquare(0.5, 0.05);
+  // a uniform mesh of the unit square at 0.05: about 2 / (0.05^2 sqrt(3) /
+  // 2) = 924 triangles
+  EXPECT_LT(graded.triangles, 1000u);
+  EXPECT_LE(graded.triangles, interpolated.triangles);
+  // Gmsh's interpolation: 0.32 next to the short curve
+  EXPECT_GT(graded.worstKappa, 0.45);
+  EXPECT_GT(graded.worstKappa, interpolated.worstKappa);
+  printf("triangles %lu -> %lu, worst kappa %g -> %g\n", interpolated.triangles,
+         graded.triangles, interpolated.worstKappa, graded.worstKappa);
+}
