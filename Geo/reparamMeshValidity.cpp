@@ -6,6 +6,7 @@
 #include <string>
 #include "GEdge.h"
 #include "GFace.h"
+#include "GmshDefines.h"
 #include "GmshMessage.h"
 #include "MLine.h"
 #include "MTriangle.h"
@@ -141,7 +142,13 @@ bool reparamKeepPlanarMesh(GFace *gf)
   if(reparamMeshFaceWithItsInput(gf, left)) return true;
   const std::size_t against = countElementsAgainstFaceNormals(gf);
   if(!against) return true;
-  if(100 * against > gf->triangles.size()) return false;
+  if(100 * against > gf->triangles.size()) {
+    // Gmsh would remesh it with MeshAdapt: only if that has fewer
+    meshDefects defects;
+    defects.againstInput = countTrianglesAgainstInput(gf);
+    reparamTryOtherMesher(gf, defects, ALGO_2D_MESHADAPT);
+    return true;
+  }
   Msg::Info("Reparam: surface %d: mesh kept with %lu of its %lu elements "
             "against the normals at their nodes (no MeshAdapt remesh)",
             gf->tag(), against, gf->triangles.size());

@@ -51,7 +51,12 @@ namespace {
 
   const char *algorithmName(int algorithm)
   {
-    return algorithm == ALGO_2D_DELAUNAY ? "Delaunay" : "Frontal-Delaunay";
+    switch(algorithm) {
+    case ALGO_2D_MESHADAPT: return "MeshAdapt";
+    case ALGO_2D_DELAUNAY: return "Delaunay";
+    case ALGO_2D_FRONTAL: return "Frontal-Delaunay";
+    default: return "another algorithm";
+    }
   }
 
   std::string defectsText(const meshDefects &d)
@@ -80,11 +85,13 @@ std::size_t countTrianglesAgainstInput(GFace *gf)
   return std::min(raw, gf->triangles.size() - raw);
 }
 
-bool reparamTryOtherMesher(GFace *gf, const meshDefects &current)
+bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
 {
   if(!gf->quadrangles.empty()) return false;
-  const int other = gf->getMeshingAlgo() == ALGO_2D_DELAUNAY ? ALGO_2D_FRONTAL :
-                                                               ALGO_2D_DELAUNAY;
+  int other = algorithm;
+  if(!other)
+    other = gf->getMeshingAlgo() == ALGO_2D_DELAUNAY ? ALGO_2D_FRONTAL :
+                                                       ALGO_2D_DELAUNAY;
   detachedMesh kept = detach(gf);
   trying = true;
   gf->setMeshingAlgo(other);

@@ -6,7 +6,9 @@
 // such face with MeshAdapt, some 10 times slower (35 s on a 17 000-triangle
 // face of camelhead, 26 s on a 3 000-triangle face of adis16480) and no
 // better there: adis16480's face 2 kept 1 triangle against the input with
-// Frontal-Delaunay, 2 with MeshAdapt, 0 with Delaunay.
+// Frontal-Delaunay, 2 with MeshAdapt, 0 with Delaunay. Where Gmsh would
+// still remesh with MeshAdapt, its mesh is compared too, not taken blindly
+// (a face of a noisy camelhead: 2 against the input, 8 with MeshAdapt).
 
 #ifndef REPARAM_MESHER_FALLBACK_H
 #define REPARAM_MESHER_FALLBACK_H
@@ -33,10 +35,12 @@ struct meshDefects {
 std::size_t countTrianglesAgainstInput(GFace *gf);
 
 // Meshes gf (Reparam parametrized, its current mesh with the defects
-// `current`) with Delaunay, or Frontal-Delaunay if that was Delaunay, then
-// optimizes it (Mesh.CompoundOptimize); keeps that mesh and returns true if
-// it has fewer defects, else puts the current mesh back (both logged)
-bool reparamTryOtherMesher(GFace *gf, const meshDefects &current);
+// `current`) with `algorithm` (Mesh.Algorithm's values; 0: Delaunay, or
+// Frontal-Delaunay if that was gf's), then optimizes it
+// (Mesh.CompoundOptimize); keeps that mesh and returns true if it has fewer
+// defects, else puts the current mesh back (both logged)
+bool reparamTryOtherMesher(GFace *gf, const meshDefects &current,
+                           int algorithm = 0);
 
 // Whether this thread is meshing a face for reparamTryOtherMesher: the
 // validity hook leaves the comparison to it
