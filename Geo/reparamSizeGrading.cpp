@@ -10,6 +10,7 @@
 #include "MVertex.h"
 #include "gradedBoundarySize.h"
 #include "reparamOptions.h"
+#include "reparamReport.h"
 #include "reparamSizeGrading.h"
 
 namespace {
@@ -70,8 +71,12 @@ namespace {
 
 void reparamBeginSizeGrading(GFace *gf)
 {
+  // Reparam's maps only: Gmsh's own (0) keeps Gmsh's sizes (the reference)
+  const parametrizationRecord *map = findParametrization(gf);
   const double gradient = getReparamOptions().meshSizeGradient;
-  if(gradient <= 0. || !gf->getMeshSizeFromBoundary()) return;
+  if(!map || map->map <= 0 || gradient <= 0. ||
+     !gf->getMeshSizeFromBoundary())
+    return;
   current.size = boundarySizes(gf, gradient);
   current.face = gf;
   current.meshSizeFromBoundary = gf->meshAttributes.meshSizeFromBoundary;
