@@ -1,8 +1,11 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
+#include "BackgroundMeshTools.h"
+#include "Context.h"
 #include "GEdge.h"
 #include "GModel.h"
 #include "GVertex.h"
@@ -10,8 +13,10 @@
 #include "MVertex.h"
 #include "curveCornerSnap.h"
 #include "edgeByCoordinates.h"
+#include "gradedCurveNodes.h"
 #include "reparamCurveMesh.h"
 #include "reparamOptions.h"
+#include "reparamSizeGrading.h"
 
 namespace {
 
@@ -81,13 +86,12 @@ void reparamRecordSmoothCuts(const std::vector<std::array<SPoint3, 2> > &edges)
 
 namespace {
 
-  // The input polyline of a discrete curve, whose parameter runs over its
-  // nodes (node i at i); false for another kind of curve
-  bool inputPolyline(GEdge *ge, std::vector<SPoint3> &polyline)
+  // (of at least `fewest` segments)
+  bool inputPolyline(GEdge *ge, std::vector<SPoint3> &polyline, int fewest = 2)
   {
     const Range<double> bounds = ge->parBounds(0);
     const int last = (int)std::lround(bounds.high());
-    if(bounds.low() != 0. || last < 2 ||
+    if(bounds.low() != 0. || last < fewest ||
        std::fabs(bounds.high() - last) > 1e-12)
       return false;
     polyline.resize(last + 1);
@@ -152,13 +156,48 @@ bool reparamIsCrossableCurve(GEdge *ge)
   return true;
 }
 
+namespace {
+
+  // The nodes spread by the sizes graded from the ends of the short curves
+  // (Geo/reparamSizeGrading.h), where they are smaller than Gmsh's
+  void gradeCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
+  {
+    std::vector<SPoint3> polyline;
+    if(!reparamCurveSizesGraded(ge) || !inputPolyline(ge, polyline, 1)) return;
+    auto gmshSize = [ge](const SPoint3 &x, double t) {
+      return BGM_MeshSize(ge, t, 0., x.x(), x.y(), x.z());
+    };
+    bool smaller = false;
+    for(std::size_t i = 0; i < polyline.size() && !smaller; i++) {
+      const double size = gmshSize(polyline[i], (double)i);
+      smaller = reparamGradedCurveSize(ge, polyline[i], size) < size;
+    }
+    if(!smaller) return;
+    // a closed curve needs 3 segments to bound anything
+    int fewest = std::max(1, CTX::instance()->mesh.minCurveNodes - 1);
+    if(ge->getBeginVertex() == ge->getEndVertex()) fewest = std::max(fewest, 3);
+    const std::vector<double> params = gradedCurveParameters(
+      polyline,
+      [&](const SPoint3 &x, double t) {
+        return reparamGradedCurveSize(ge, x, gmshSize(x, t));
+      },
+      fewest);
+    const std::size_t before = nodes.size();
+    moveNodes(ge, params, nodes);
+    Msg::Debug("Reparam: curve %d: sizes graded from the short curves' ends "
+               "(%lu nodes, %lu before)",
+               ge->tag(), nodes.size(), before);
+  }
+
+} // namespace
+
 void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
 {
-  if(nodes.empty() || ge->geomType() != GEntity::DiscreteCurve ||
-     getReparamOptions().parametrization ==
-       (int)compoundParametrization::gmsh ||
-     !getReparamOptions().curveCorners)
+  if(ge->geomType() != GEntity::DiscreteCurve ||
+     getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return;
+  gradeCurveMesh(ge, nodes);
+  if(nodes.empty() || !getReparamOptions().curveCorners) return;
   std::vector<SPoint3> polyline;
   std::vector<double> params;
   if(!inputPolyline(ge, polyline) || isSmoothCut(polyline) ||
@@ -186,4 +225,10 @@ void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
   Msg::Debug("Reparam: curve %d: nodes on the input's corners (%lu nodes, "
              "%lu before)",
              ge->tag(), nodes.size(), params.size() - 2);
+}
+
+bool reparamInputPolyline(GEdge *ge, std::vector<SPoint3> &polyline)
+{
+  return ge->geomType() == GEntity::DiscreteCurve &&
+         inputPolyline(ge, polyline, 1);
 }

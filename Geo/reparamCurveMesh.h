@@ -20,14 +20,12 @@ class MVertex;
 // (node pairs, by their coordinates): a curve made of them follows the
 // input's edges where nothing is sharp, so its turns are no corners of the
 // surface and its nodes are left where Gmsh puts them
-void reparamRecordSmoothCuts(
-  const std::vector<std::array<SPoint3, 2> > &edges);
+void reparamRecordSmoothCuts(const std::vector<std::array<SPoint3, 2> > &edges);
 
 // The input edges of the last patch layout that no mesh may cross: its
 // sharp edges (Gmsh's classification lines), borders and non-manifold
 // edges (node pairs, by their coordinates)
-void reparamRecordFixedEdges(
-  const std::vector<std::array<SPoint3, 2> > &edges);
+void reparamRecordFixedEdges(const std::vector<std::array<SPoint3, 2> > &edges);
 
 // Whether discrete curve ge runs along none of those edges: a cut of the
 // layout across a smooth part of the surface, that the mesh may cross once
@@ -35,6 +33,10 @@ void reparamRecordFixedEdges(
 // the layout's own cut: Gmsh's classification may end the patches a
 // triangle off it
 bool reparamIsCrossableCurve(GEdge *ge);
+
+// The input polyline of a discrete curve, whose parameter runs over its
+// nodes (node i at i); false for another kind of curve
+bool reparamInputPolyline(GEdge *ge, std::vector<SPoint3> &polyline);
 
 // nodes: the curve's mesh nodes without its end points, in order along it.
 // Does nothing unless ge is a discrete curve, Reparam computes the

@@ -1,14 +1,19 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include "BackgroundMeshTools.h"
 #include "GEdge.h"
+#include "Context.h"
 #include "GFace.h"
+#include "GModel.h"
+#include "GVertex.h"
 #include "GmshMessage.h"
 #include "MLine.h"
 #include "MVertex.h"
 #include "gradedBoundarySize.h"
+#include "reparamCurveMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
@@ -54,28 +59,94 @@ namespace {
       shortestSegmentAtNodes(nodes, segments);
     std::vector<SPoint3> small;
     std::vector<double> sizes;
+    double reach = 0.;
     for(std::size_t i = 0; i < nodes.size(); i++) {
       const SPoint3 &p = nodes[i];
-      if(shortest[i] <= 0. ||
-         shortest[i] >=
-           nearlyTheSize * BGM_MeshSize(gf, 0., 0., p.x(), p.y(), p.z()))
-        continue;
+      const double size = BGM_MeshSize(gf, 0., 0., p.x(), p.y(), p.z());
+      reach = std::max(reach, size);
+      if(shortest[i] <= 0. || shortest[i] >= nearlyTheSize * size) continue;
       small.push_back(p);
       sizes.push_back(shortest[i]);
     }
     return std::unique_ptr<gradedBoundarySize>(
-      new gradedBoundarySize(small, sizes, gradient));
+      new gradedBoundarySize(small, sizes, gradient, reach));
+  }
+
+  // The curves' sizes while they are meshed: read by every thread
+  struct curveGrading {
+    GModel *model = nullptr;
+    std::unique_ptr<gradedBoundarySize> size;
+  };
+  curveGrading curves;
+
+  // The ends of m's discrete curves shorter than the size asked along them,
+  // with the length of their segments
+  std::unique_ptr<gradedBoundarySize> shortCurveEnds(GModel *m, double gradient)
+  {
+    const int segments = std::max(1, CTX::instance()->mesh.minCurveNodes - 1);
+    std::vector<SPoint3> ends;
+    std::vector<double> sizes;
+    double reach = 0.;
+    for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
+      GEdge *ge = *it;
+      std::vector<SPoint3> polyline;
+      if(!reparamInputPolyline(ge, polyline)) continue;
+      double length = 0.;
+      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+        length += polyline[i].distance(polyline[i + 1]);
+      const SPoint3 &middle = polyline[polyline.size() / 2];
+      const double size =
+        BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+      reach = std::max(reach, size);
+      if(length <= 0. || length >= nearlyTheSize * size) continue;
+      for(const SPoint3 &p : {polyline.front(), polyline.back()}) {
+        ends.push_back(p);
+        sizes.push_back(length / segments);
+      }
+    }
+    return std::unique_ptr<gradedBoundarySize>(
+      new gradedBoundarySize(ends, sizes, gradient, reach));
   }
 
 } // namespace
+
+void reparamBeginCurveSizeGrading(GModel *m)
+{
+  const double gradient = getReparamOptions().meshSizeGradient;
+  if(gradient <= 0. ||
+     getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+    return;
+  std::unique_ptr<gradedBoundarySize> size = shortCurveEnds(m, gradient);
+  if(!size->size()) return;
+  Msg::Debug("Reparam: curve sizes graded from the ends of %lu short curves",
+             size->size() / 2);
+  curves.size = std::move(size);
+  curves.model = m;
+}
+
+void reparamEndCurveSizeGrading(GModel *m)
+{
+  if(curves.model == m) curves = curveGrading();
+}
+
+bool reparamCurveSizesGraded(const GEdge *ge)
+{
+  return curves.model && ge->model() == curves.model &&
+         ge->geomType() == GEntity::DiscreteCurve;
+}
+
+double reparamGradedCurveSize(const GEdge *ge, const SPoint3 &x, double size)
+{
+  if(!reparamCurveSizesGraded(ge)) return size;
+  return (*curves.size)(x, size);
+}
 
 void reparamBeginSizeGrading(GFace *gf)
 {
   // Reparam's maps only: Gmsh's own (0) keeps Gmsh's sizes (the reference)
   const parametrizationRecord *map = findParametrization(gf);
   const double gradient = getReparamOptions().meshSizeGradient;
-  if(!map || map->map <= 0 || gradient <= 0. ||
-     !gf->getMeshSizeFromBoundary())
+  if(!map || map->map <= 0 || gradient <= 0. || !gf->getMeshSizeFromBoundary())
     return;
   current.size = boundarySizes(gf, gradient);
   current.face = gf;

@@ -8,8 +8,12 @@
 #ifndef REPARAM_SIZE_GRADING_H
 #define REPARAM_SIZE_GRADING_H
 
+#include "SPoint3.h"
+
+class GEdge;
 class GEntity;
 class GFace;
+class GModel;
 
 // Called by discreteFace::mesh() (patches/0014) around the planar mesher:
 // with Mesh.CompoundMeshSizeGradient > 0, where gf's sizes extend from its
@@ -18,6 +22,20 @@ class GFace;
 // nodes instead; the end restores gf's setting
 void reparamBeginSizeGrading(GFace *gf);
 void reparamEndSizeGrading(GFace *gf);
+
+// Called by GenerateMesh() around Mesh1D (patches/0014): with
+// Mesh.CompoundMeshSizeGradient > 0 and Reparam's maps, the sizes along the
+// discrete curves of m grow from the ends of the curves shorter than the
+// size (a curve meshed with 2 segments of 0.1 h next to one of h: triangles
+// of kappa 0.1 at their common end, which no 2D grading helps)
+void reparamBeginCurveSizeGrading(GModel *m);
+void reparamEndCurveSizeGrading(GModel *m);
+
+// While the curves are meshed: whether the sizes along ge are graded, and
+// the graded size at x where smaller than `size`, else `size` (the 1D
+// nodes are spread by it in Geo/reparamCurveMesh.cpp)
+bool reparamCurveSizesGraded(const GEdge *ge);
+double reparamGradedCurveSize(const GEdge *ge, const SPoint3 &x, double size);
 
 // Called by BGM_MeshSize (patches/0014) with the size it found: the graded
 // size at (x, y, z) of the face being meshed by this thread where smaller,

@@ -12,25 +12,40 @@
 #ifndef GRADED_BOUNDARY_SIZE_H
 #define GRADED_BOUNDARY_SIZE_H
 
+#include <array>
+#include <unordered_map>
 #include <vector>
 #include "SPoint3.h"
 
 class gradedBoundarySize {
 public:
   // nodes[i] asks for sizes[i]; at a distance d from it, sizes[i] +
-  // gradient * d. gradient > 0
+  // gradient * d. gradient > 0; reach: the largest size the queries will be
+  // bounded by (the mesh size), which sets the cells of the search
   gradedBoundarySize(const std::vector<SPoint3> &nodes,
-                     const std::vector<double> &sizes, double gradient);
+                     const std::vector<double> &sizes, double gradient,
+                     double reach);
   // the smallest size a node asks for at x, or bound if none asks for less
   double operator()(const SPoint3 &x, double bound) const;
   std::size_t size() const { return _sizes.size(); }
 
 private:
-  // by increasing size: the search stops at the first node whose own size
-  // is no smaller than the best found
   std::vector<SPoint3> _nodes;
   std::vector<double> _sizes;
-  double _gradient;
+  double _gradient, _smallest = 0., _cell = 1.;
+  // the nodes by cell of a uniform grid, searched ring by ring from the
+  // query's cell until no node farther can give less
+  typedef std::array<long, 3> cellKey;
+  struct cellHash {
+    std::size_t operator()(const cellKey &c) const
+    {
+      return (std::size_t)(c[0] * 73856093L ^ c[1] * 19349663L ^
+                           c[2] * 83492791L);
+    }
+  };
+  std::unordered_map<cellKey, std::vector<int>, cellHash> _cells;
+  cellKey _low, _high; // the cells with nodes lie between
+  cellKey cellOf(const SPoint3 &x) const;
 };
 
 // The length of the shortest of the segments (pairs of indices into

@@ -2,11 +2,13 @@
 // into it (Mesh.CompoundMeshSizeGradient) instead of Gmsh's interpolation
 // over the whole face
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include "BackgroundMeshTools.h"
 #include "GFace.h"
 #include "GModel.h"
+#include "MLine.h"
 #include "MTriangle.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
@@ -17,7 +19,7 @@
 TEST(gradedBoundarySize, sizeGrowsWithTheDistanceToTheSmallestNode)
 {
   const gradedBoundarySize size({SPoint3(0, 0, 0), SPoint3(1, 0, 0)},
-                                {0.02, 0.05}, 0.3);
+                                {0.02, 0.05}, 0.3, 0.1);
   EXPECT_NEAR(size(SPoint3(0, 0, 0), 0.1), 0.02, 1e-12);
   EXPECT_NEAR(size(SPoint3(0, 0.1, 0), 0.1), 0.02 + 0.03, 1e-12);
   // nearer the larger node, its size wins
@@ -75,7 +77,11 @@ TEST(reparamSizeGrading, theFaceSizesGrowAwayFromAShortCurve)
   squareWithAShortCurve();
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
   gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+  // the curves' own grading off: their even segments, the short curve's
+  // two of 0.01
+  gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0);
   gmsh::model::mesh::generate(1);
+  gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
   GFace *gf = GModel::current()->getFaceByTag(1);
   ASSERT_TRUE(gf);
   auto size = [gf](double x, double y) {
@@ -106,10 +112,53 @@ TEST(reparamSizeGrading, aShortCurveGetsAGradedMeshOfTheSizeAsked)
   // a uniform mesh of the unit square at 0.05: about 2 / (0.05^2 sqrt(3) /
   // 2) = 924 triangles
   EXPECT_LT(graded.triangles, 1000u);
-  EXPECT_LE(graded.triangles, interpolated.triangles);
-  // Gmsh's interpolation: 0.32 next to the short curve
-  EXPECT_GT(graded.worstKappa, 0.45);
+  // Gmsh's interpolation: 0.32 next to the short curve; the faces' grading
+  // alone (even curve segments): 0.52; graded curves: 0.71
+  EXPECT_GT(graded.worstKappa, 0.65);
   EXPECT_GT(graded.worstKappa, interpolated.worstKappa);
   printf("triangles %lu -> %lu, worst kappa %g -> %g\n", interpolated.triangles,
          graded.triangles, interpolated.worstKappa, graded.worstKappa);
+}
+
+namespace {
+
+  // The lengths of the segments of curve 2 (the bottom side from the short
+  // curve's end at x = 0.02 to the corner), from that end on
+  std::vector<double> bottomSegments(double gradient)
+  {
+    squareWithAShortCurve();
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+    gmsh::model::mesh::generate(1);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+    std::vector<double> x;
+    for(MLine *l : GModel::current()->getEdgeByTag(2)->lines)
+      for(int k = 0; k < 2; k++) x.push_back(l->getVertex(k)->x());
+    std::sort(x.begin(), x.end());
+    x.erase(std::unique(x.begin(), x.end()), x.end());
+    std::vector<double> lengths;
+    for(std::size_t i = 0; i + 1 < x.size(); i++)
+      lengths.push_back(x[i + 1] - x[i]);
+    return lengths;
+  }
+
+} // namespace
+
+TEST(reparamSizeGrading, curveSizesGrowFromTheEndsOfShortCurves)
+{
+  // the short curve (0.02) has 2 segments of 0.01; its neighbour starts
+  // at about that and grows by half its distance to it, to 0.1
+  const std::vector<double> graded = bottomSegments(0.5);
+  ASSERT_GT(graded.size(), 10u);
+  EXPECT_LT(graded.front(), 0.03);
+  EXPECT_NEAR(graded.back(), 0.1, 0.02);
+  for(std::size_t i = 0; i + 1 < graded.size(); i++)
+    EXPECT_LT(graded[i + 1], 2. * graded[i]) << i; // no jump
+  // Gmsh's own: even segments of about 0.1 from the short curve on
+  const std::vector<double> even = bottomSegments(0.);
+  EXPECT_GT(even.front(), 0.09);
+  EXPECT_LT(even.size(), graded.size());
 }
