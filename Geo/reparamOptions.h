@@ -45,8 +45,8 @@ struct reparamOptions {
   int optimize = 1;
   // Mesh.CompoundMeshSizeGradient: where sizes extend from the boundary,
   // the size of a short boundary segment grows by this much per unit
-  // distance into the face (Geo/reparamSizeGrading.cpp); 0: Gmsh's linear
-  // interpolation of the boundary sizes
+  // distance into the face, and along discrete curves the size from the
+  // ends of the short curves (Geo/reparamSizeGrading.cpp); 0: Gmsh's sizes
   double meshSizeGradient = 0.5;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
