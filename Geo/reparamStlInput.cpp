@@ -1,7 +1,11 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <array>
 #include <cmath>
+#include <map>
 #include "GmshMessage.h"
+#include "facetOrientation.h"
+#include "reparamOptions.h"
 #include "reparamStlInput.h"
 
 namespace {
@@ -13,8 +17,9 @@ namespace {
 
 } // namespace
 
-std::size_t reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
-                                        SBoundingBox3d &bbox)
+std::size_t
+reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
+                            SBoundingBox3d &bbox)
 {
   std::size_t dropped = 0;
   for(std::vector<SPoint3> &solid : points) {
@@ -44,7 +49,8 @@ std::size_t reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &poin
   return dropped;
 }
 
-unsigned int reparamCompleteStlFacets(unsigned int facets, std::size_t bytesRead)
+unsigned int reparamCompleteStlFacets(unsigned int facets,
+                                      std::size_t bytesRead)
 {
   const std::size_t complete = bytesRead / 50;
   if(complete >= facets) return facets;
@@ -52,4 +58,44 @@ unsigned int reparamCompleteStlFacets(unsigned int facets, std::size_t bytesRead
                "facets read",
                complete, facets);
   return (unsigned int)complete;
+}
+
+std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points)
+{
+  if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+    return 0;
+  std::size_t reversed = 0, dropped = 0;
+  for(std::vector<SPoint3> &solid : points) {
+    // the corners of neighbouring facets are written with the same
+    // coordinates: nodes by exact coordinates (Gmsh merges them after)
+    std::map<std::array<double, 3>, int> index;
+    std::vector<std::array<int, 3> > facets(solid.size() / 3);
+    for(std::size_t i = 0; i < 3 * facets.size(); i++) {
+      const std::array<double, 3> key = {
+        {solid[i].x(), solid[i].y(), solid[i].z()}};
+      facets[i / 3][i % 3] =
+        index.insert(std::make_pair(key, (int)index.size())).first->second;
+    }
+    const facetRepair r = orientFacets(facets);
+    if(!r.reversed && !r.dropped) continue;
+    std::vector<SPoint3> kept;
+    kept.reserve(solid.size());
+    for(std::size_t f = 0; f < facets.size(); f++) {
+      if(r.drop[f]) continue;
+      const SPoint3 *c = &solid[3 * f];
+      if(r.reverse[f])
+        kept.insert(kept.end(), {c[0], c[2], c[1]});
+      else
+        kept.insert(kept.end(), {c[0], c[1], c[2]});
+    }
+    solid.swap(kept);
+    reversed += r.reversed;
+    dropped += r.dropped;
+  }
+  if(reversed || dropped)
+    Msg::Warning("Reparam: STL input repaired: %lu facets turned to agree "
+                 "with their neighbours, %lu facets repeating another's "
+                 "nodes dropped",
+                 reversed, dropped);
+  return reversed + dropped;
 }

@@ -17,8 +17,15 @@
 // non-finite corner and recomputes bbox when any was dropped; returns how
 // many were. An incomplete last facet (a file cut short) is dropped too,
 // with a warning.
-std::size_t reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
-                                        SBoundingBox3d &bbox);
+std::size_t
+reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
+                            SBoundingBox3d &bbox);
+
+// With Reparam's maps (Mesh.CompoundParametrization > 0 when the file is
+// merged): the facets of each solid turned to agree with their neighbours
+// and those repeating another's nodes dropped (Mesh/facetOrientation.h),
+// with one warning; returns how many facets changed
+std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points);
 
 // The facets of a binary STL read when `bytesRead` of the `facets` * 50
 // bytes announced were there: all of them, or the complete ones of a file
