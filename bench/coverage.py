@@ -252,8 +252,10 @@ def recipe(stl, map_value, size, folder):
     """The README's STL recipe with its default options."""
     return "\n".join(
         [
-            'Merge "%s";' % os.path.abspath(stl),
+            # the map first: Reparam repairs the STL facets' orientation at
+            # Merge, Gmsh's own map (0) keeps the file as it is
             "Mesh.CompoundParametrization = %d;" % map_value,
+            'Merge "%s";' % os.path.abspath(stl),
             "ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};",
             "CreateGeometry;",
             "Mesh.MeshSizeMin = %.9g;" % size,
