@@ -104,13 +104,22 @@ namespace {
 
 } // namespace
 
+namespace {
+
+  // A triangle mesh of a face Reparam parametrized: Gmsh's map keeps Gmsh's
+  // behaviour (the reference)
+  bool isReparamTriangleMesh(GFace *gf)
+  {
+    const parametrizationRecord *record = findParametrization(gf);
+    return record && record->map > 0 && !gf->triangles.empty() &&
+           gf->quadrangles.empty();
+  }
+
+} // namespace
+
 bool reparamKeepPlanarMesh(GFace *gf)
 {
-  // Reparam's own maps only: Gmsh's map keeps Gmsh's behaviour (reference)
-  const parametrizationRecord *record = findParametrization(gf);
-  if(!record || record->map <= 0 || gf->triangles.empty() ||
-     !gf->quadrangles.empty())
-    return false;
+  if(!isReparamTriangleMesh(gf)) return false;
   // a mesh tried in place of another: compared there
   if(reparamTryingOtherMesher()) return true;
   // None against the input under it (the report's test, which samples the
@@ -185,11 +194,7 @@ std::size_t countUnusedCurveSegments(GFace *gf)
 
 bool reparamPlanarMeshLeavesHole(GFace *gf)
 {
-  const parametrizationRecord *record = findParametrization(gf);
-  if(!record || record->map <= 0 || gf->triangles.empty() ||
-     !gf->quadrangles.empty())
-    return false;
-  if(reparamTryingOtherMesher()) return false;
+  if(!isReparamTriangleMesh(gf) || reparamTryingOtherMesher()) return false;
   meshDefects defects;
   defects.unusedCurveSegments = countUnusedCurveSegments(gf);
   if(!defects.unusedCurveSegments) return false;

@@ -88,32 +88,34 @@ double opt_mesh_compound_optimize(OPT_ARGS_NUM)
   return o.optimize;
 }
 
+namespace {
+
+  // A finite value >= 0, else an error and the old value kept
+  double nonNegativeOption(double &value, const char *name, int action,
+                           double val)
+  {
+    if(action & GMSH_SET) {
+      if(!(val >= 0.) || !std::isfinite(val))
+        Msg::Error("Mesh.%s must be >= 0 (got %g): keeping %g", name, val,
+                   value);
+      else
+        value = val;
+    }
+    return value;
+  }
+
+} // namespace
+
 double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) {
-    if(!(val >= 0.) || !std::isfinite(val))
-      Msg::Error("Mesh.CompoundNoiseSize must be a size >= 0 (got %g): "
-                 "keeping %g",
-                 val, o.noiseSize);
-    else
-      o.noiseSize = val;
-  }
-  return o.noiseSize;
+  return nonNegativeOption(getReparamOptions().noiseSize, "CompoundNoiseSize",
+                           action, val);
 }
 
 double opt_mesh_compound_mesh_size_gradient(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) {
-    if(!(val >= 0.) || !std::isfinite(val))
-      Msg::Error("Mesh.CompoundMeshSizeGradient must be >= 0 (got %g): "
-                 "keeping %g",
-                 val, o.meshSizeGradient);
-    else
-      o.meshSizeGradient = val;
-  }
-  return o.meshSizeGradient;
+  return nonNegativeOption(getReparamOptions().meshSizeGradient,
+                           "CompoundMeshSizeGradient", action, val);
 }
 
 double opt_mesh_compound_report(OPT_ARGS_NUM)
