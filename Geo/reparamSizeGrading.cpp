@@ -8,6 +8,7 @@
 #include "Context.h"
 #include "GFace.h"
 #include "GModel.h"
+#include "GmshDefines.h"
 #include "GVertex.h"
 #include "GmshMessage.h"
 #include "MLine.h"
@@ -110,8 +111,44 @@ namespace {
 
 } // namespace
 
+namespace {
+
+  // A curve's mesh with more segments than this is refused: Gmsh would
+  // spend hours and gigabytes on it (coordinates of 1e30 with the default
+  // Mesh.MeshSizeMax of 1e22: 4e8 segments on a square's side)
+  const double mostSegments = 1e7;
+
+  // The curves refused, with their meshing method, restored after Mesh1D
+  std::vector<std::pair<GEdge *, int> > refusedCurves;
+
+  void refuseHugeCurveMeshes(GModel *m)
+  {
+    for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
+      GEdge *ge = *it;
+      std::vector<SPoint3> polyline;
+      if(!reparamInputPolyline(ge, polyline)) continue;
+      double length = 0.;
+      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+        length += polyline[i].distance(polyline[i + 1]);
+      const SPoint3 &middle = polyline[polyline.size() / 2];
+      const double size =
+        BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+      if(!(length / size > mostSegments)) continue;
+      Msg::Error("Reparam: curve %d would get %.3g segments (length %g, mesh "
+                 "size %g): not meshed. Set Mesh.MeshSizeMax (or "
+                 "Mesh.MeshSizeFactor) to the model's scale",
+                 ge->tag(), length / size, length, size);
+      refusedCurves.push_back({ge, ge->meshAttributes.method});
+      ge->meshAttributes.method = MESH_NONE;
+    }
+  }
+
+} // namespace
+
 void reparamBeginCurveSizeGrading(GModel *m)
 {
+  if(getReparamOptions().parametrization != (int)compoundParametrization::gmsh)
+    refuseHugeCurveMeshes(m);
   const double gradient = getReparamOptions().meshSizeGradient;
   if(gradient <= 0. ||
      getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
@@ -126,6 +163,9 @@ void reparamBeginCurveSizeGrading(GModel *m)
 
 void reparamEndCurveSizeGrading(GModel *m)
 {
+  for(const auto &r : refusedCurves)
+    if(r.first->model() == m) r.first->meshAttributes.method = r.second;
+  refusedCurves.clear();
   if(curves.model == m) curves = curveGrading();
 }
 

@@ -28,6 +28,9 @@ void reparamEndSizeGrading(GFace *gf);
 // discrete curves of m grow from the ends of the curves shorter than the
 // size (a curve meshed with 2 segments of 0.1 h next to one of h: triangles
 // of kappa 0.1 at their common end, which no 2D grading helps)
+// Begin also refuses, with an error, the discrete curves whose mesh would
+// have more than 1e7 segments (the size far below the model's scale), which
+// Gmsh would spend hours on; End gives them back their meshing method.
 void reparamBeginCurveSizeGrading(GModel *m);
 void reparamEndCurveSizeGrading(GModel *m);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <gtest/gtest.h>
 #include "BackgroundMeshTools.h"
 #include "GFace.h"
@@ -161,4 +162,33 @@ TEST(reparamSizeGrading, curveSizesGrowFromTheEndsOfShortCurves)
   const std::vector<double> even = bottomSegments(0.);
   EXPECT_GT(even.front(), 0.09);
   EXPECT_LT(even.size(), graded.size());
+}
+
+TEST(reparamSizeGrading, aCurveMeshOfBillionsOfSegmentsIsRefused)
+{
+  // a size 1e-9 on the unit square: 1e9 segments a side, hours of Gmsh's
+  // 1D mesher; refused with an error, and meshed again once sized
+  squareWithAShortCurve();
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 1e-9);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e-9);
+  gmsh::logger::start();
+  gmsh::model::mesh::generate(1);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  gmsh::logger::stop();
+  bool refused = false;
+  for(const std::string &l : log)
+    refused = refused || l.find("segments (length 0.98, mesh size 1e-09): "
+                                "not meshed") != std::string::npos;
+  EXPECT_TRUE(refused);
+  // the side keeps the input's segments (of 0.025), not a billion
+  GEdge *side = GModel::current()->getEdgeByTag(2);
+  EXPECT_LT(side->lines.size(), 50u);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+  gmsh::model::mesh::generate(1);
+  EXPECT_GE(side->lines.size(), 10u); // graded from the short curve
+  EXPECT_LT(side->lines.size(), 20u);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
 }
