@@ -1,15 +1,10 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
-#include <map>
-#include <set>
+#include <cstdint>
 #include "facetOrientation.h"
 
 namespace {
-
-  typedef std::pair<int, int> edgeKey;
-
-  edgeKey keyOf(int a, int b) { return a < b ? edgeKey(a, b) : edgeKey(b, a); }
 
   bool degenerate(const std::array<int, 3> &f)
   {
@@ -28,14 +23,52 @@ namespace {
   void dropDuplicates(const std::vector<std::array<int, 3> > &facets,
                       facetRepair &r)
   {
-    std::set<std::array<int, 3> > seen;
+    std::vector<std::pair<std::array<int, 3>, int> > sorted;
+    sorted.reserve(facets.size());
     for(std::size_t i = 0; i < facets.size(); i++) {
-      std::array<int, 3> sorted = facets[i];
-      std::sort(sorted.begin(), sorted.end());
-      if(degenerate(facets[i]) || seen.insert(sorted).second) continue;
-      r.drop[i] = true;
-      r.dropped++;
+      if(degenerate(facets[i])) continue;
+      std::array<int, 3> key = facets[i];
+      std::sort(key.begin(), key.end());
+      sorted.push_back({key, (int)i});
     }
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t i = 1; i < sorted.size(); i++)
+      if(sorted[i].first == sorted[i - 1].first) {
+        r.drop[sorted[i].second] = true;
+        r.dropped++;
+      }
+  }
+
+  // Per kept facet and edge k (corners k, k + 1): the other facet of that
+  // edge when exactly two kept facets use it, else -1
+  std::vector<std::array<int, 3> >
+  neighbours(const std::vector<std::array<int, 3> > &facets,
+             const facetRepair &r)
+  {
+    std::vector<std::pair<std::uint64_t, int> > edges; // (edge, 3 facet + k)
+    edges.reserve(3 * facets.size());
+    for(std::size_t i = 0; i < facets.size(); i++) {
+      if(r.drop[i] || degenerate(facets[i])) continue;
+      for(int k = 0; k < 3; k++) {
+        const std::uint64_t a = (std::uint32_t)facets[i][k],
+                            b = (std::uint32_t)facets[i][(k + 1) % 3];
+        edges.push_back(
+          {std::min(a, b) << 32 | std::max(a, b), (int)(3 * i + k)});
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::array<int, 3> > next(facets.size(), {{-1, -1, -1}});
+    for(std::size_t i = 0; i < edges.size();) {
+      std::size_t j = i;
+      while(j < edges.size() && edges[j].first == edges[i].first) j++;
+      if(j - i == 2) {
+        const int s = edges[i].second, t = edges[i + 1].second;
+        next[s / 3][s % 3] = t / 3;
+        next[t / 3][t % 3] = s / 3;
+      }
+      i = j;
+    }
+    return next;
   }
 
 } // namespace
@@ -46,12 +79,7 @@ facetRepair orientFacets(const std::vector<std::array<int, 3> > &facets)
   r.reverse.assign(facets.size(), false);
   r.drop.assign(facets.size(), false);
   dropDuplicates(facets, r);
-  std::map<edgeKey, std::vector<int> > around;
-  for(std::size_t i = 0; i < facets.size(); i++) {
-    if(r.drop[i] || degenerate(facets[i])) continue;
-    for(int k = 0; k < 3; k++)
-      around[keyOf(facets[i][k], facets[i][(k + 1) % 3])].push_back((int)i);
-  }
+  const std::vector<std::array<int, 3> > next = neighbours(facets, r);
   std::vector<bool> seen(facets.size(), false);
   std::vector<int> flip(facets.size(), 0);
   for(std::size_t start = 0; start < facets.size(); start++) {
@@ -62,12 +90,10 @@ facetRepair orientFacets(const std::vector<std::array<int, 3> > &facets)
     for(std::size_t n = 0; n < piece.size(); n++) {
       const int f = piece[n];
       for(int k = 0; k < 3; k++) {
+        const int g = next[f][k];
+        if(g < 0 || seen[g]) continue;
         int a = facets[f][k], b = facets[f][(k + 1) % 3];
         if(flip[f]) std::swap(a, b); // as f will run once turned
-        const std::vector<int> &on = around[keyOf(a, b)];
-        if(on.size() != 2) continue; // a border or non-manifold edge
-        const int g = on[0] == f ? on[1] : on[0];
-        if(seen[g]) continue;
         seen[g] = true;
         flip[g] = runs(facets[g], a, b); // same direction: turn it
         piece.push_back(g);
