@@ -80,6 +80,20 @@ namespace {
   };
   curveGrading curves;
 
+  // A discrete curve's input polyline, its length and the size asked at
+  // its middle; false for another kind of curve
+  bool measureCurve(GEdge *ge, std::vector<SPoint3> &polyline, double &length,
+                    double &size)
+  {
+    if(!reparamInputPolyline(ge, polyline)) return false;
+    length = 0.;
+    for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+      length += polyline[i].distance(polyline[i + 1]);
+    const SPoint3 &middle = polyline[polyline.size() / 2];
+    size = BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+    return true;
+  }
+
   // The ends of m's discrete curves shorter than the size asked along them,
   // with the length of their segments
   std::unique_ptr<gradedBoundarySize> shortCurveEnds(GModel *m, double gradient)
@@ -89,15 +103,9 @@ namespace {
     std::vector<double> sizes;
     double reach = 0.;
     for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
-      GEdge *ge = *it;
       std::vector<SPoint3> polyline;
-      if(!reparamInputPolyline(ge, polyline)) continue;
-      double length = 0.;
-      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
-        length += polyline[i].distance(polyline[i + 1]);
-      const SPoint3 &middle = polyline[polyline.size() / 2];
-      const double size =
-        BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+      double length, size;
+      if(!measureCurve(*it, polyline, length, size)) continue;
       reach = std::max(reach, size);
       if(length <= 0. || length >= nearlyTheSize * size) continue;
       for(const SPoint3 &p : {polyline.front(), polyline.back()}) {
@@ -108,10 +116,6 @@ namespace {
     return std::unique_ptr<gradedBoundarySize>(
       new gradedBoundarySize(ends, sizes, gradient, reach));
   }
-
-} // namespace
-
-namespace {
 
   // A curve's mesh with more segments than this is refused: Gmsh would
   // spend hours and gigabytes on it (coordinates of 1e30 with the default
@@ -126,14 +130,10 @@ namespace {
     for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
       GEdge *ge = *it;
       std::vector<SPoint3> polyline;
-      if(!reparamInputPolyline(ge, polyline)) continue;
-      double length = 0.;
-      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
-        length += polyline[i].distance(polyline[i + 1]);
-      const SPoint3 &middle = polyline[polyline.size() / 2];
-      const double size =
-        BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
-      if(!(length / size > mostSegments)) continue;
+      double length, size;
+      if(!measureCurve(ge, polyline, length, size) ||
+         !(length / size > mostSegments))
+        continue;
       Msg::Error("Reparam: curve %d would get %.3g segments (length %g, mesh "
                  "size %g): not meshed. Set Mesh.MeshSizeMax (or "
                  "Mesh.MeshSizeFactor) to the model's scale",
