@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""The speed bench's runs and table (bench/speed.sh)."""
+
+import argparse
+import datetime
+import os
+import re
+import resource
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import coverage  # noqa: E402
+
+# Reparam's stages, from Gmsh's "Done ... (Wall ..s, CPU ..s)" lines
+STAGES = [
+    ("classify", "Done classifying surfaces"),
+    ("geometry", "Done creating geometry of discrete surfaces"),
+    ("1D", "Done meshing 1D"),
+    ("2D", "Done meshing 2D"),
+]
+
+
+def stage_seconds(log):
+    """CPU seconds of each stage in a gmsh log (None where missing)."""
+    text = open(log, errors="replace").read()
+    out = {}
+    for name, line in STAGES:
+        m = re.search(re.escape(line) + r".*?CPU ([0-9.eE+-]+)s", text)
+        out[name] = float(m.group(1)) if m else None
+    m = re.search(r"Reparam: total +\d+ surf\.\s+(.*)", text)
+    out["triangles"] = int(m.group(1).split()[7]) if m else None
+    return out
+
+
+def run_gmsh(gmsh, stl, map_value, size, timeout):
+    with tempfile.TemporaryDirectory(prefix="reparam-speed-") as folder:
+        geo = os.path.join(folder, "recipe.geo")
+        with open(geo, "w") as f:
+            f.write(coverage.recipe(stl, map_value, size, folder))
+        log = os.path.join(folder, "gmsh.log")
+        status, cpu = coverage.run_gmsh(gmsh, geo, log, timeout)
+        stages = stage_seconds(log)
+        if stages["triangles"] is None:
+            try:
+                out = coverage.read_msh_surface(os.path.join(folder, "out.msh"))
+                stages["triangles"] = sum(1 for e in out if len(e) == 3)
+            except (OSError, ValueError, StopIteration):
+                pass
+        return status, cpu, stages
+
+
+def run_cgal(cgal, stl, size, timeout):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    try:
+        out = subprocess.run([cgal, stl, "%.9g" % size], capture_output=True,
+                             text=True, timeout=timeout).stdout
+    except subprocess.TimeoutExpired:
+        return "timeout", None, None
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    m = re.search(r"cgal triangles (\d+)", out)
+    return None, cpu, int(m.group(1)) if m else None
+
+
+def text(value, form="%.2f"):
+    return "-" if value is None else form % value
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--gmsh", required=True)
+    parser.add_argument("--cgal", default="")
+    parser.add_argument("--repo", required=True)
+    parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("meshes", nargs="+")
+    a = parser.parse_args()
+    print("Speed of the STL recipe (bench/speed.sh), %s, commit %s, %d CPUs "
+          "(%s), Gmsh %s, timeout %g s." % (
+              datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
+              coverage.command_output(
+                  ["git", "-C", a.repo, "rev-parse", "--short", "HEAD"]),
+              len(os.sched_getaffinity(0)), coverage.cpu_model(),
+              coverage.command_output([a.gmsh, "-version"]), a.timeout))
+    print("\nCPU seconds of each process (Reparam: the README's recipe with "
+          "the defaults; stock: Gmsh's own map and split loop; CGAL: "
+          "isotropic remeshing, 3 iterations, borders protected, after "
+          "reading and orienting the STL), at the same target edge length. "
+          "Reparam's stages are the CPU its log gives for each.\n")
+    print("| mesh | input triangles | size | Reparam CPU (s) | classify | "
+          "CreateGeometry | 1D | 2D | stock CPU (s) | CGAL CPU (s) | "
+          "Reparam / CGAL | Reparam / stock | triangles Reparam | stock | "
+          "CGAL |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+          "---:|---:|")
+    total = {"reparam": 0.0, "stock": 0.0, "cgal": 0.0}
+    for stl in a.meshes:
+        triangles, area = coverage.read_stl(stl)
+        size = coverage.mesh_size(area, len(triangles))
+        rs, rcpu, rst = run_gmsh(a.gmsh, stl, 6, size, a.timeout)
+        ss, scpu, sst = run_gmsh(a.gmsh, stl, 0, size, a.timeout)
+        cs, ccpu, ctri = (run_cgal(a.cgal, stl, size, a.timeout)
+                          if a.cgal else (None, None, None))
+        total["reparam"] += rcpu
+        total["stock"] += scpu
+        total["cgal"] += ccpu or 0.0
+        stock = text(scpu, "%.2f") + (" (%s)" % ss if ss else "")
+        print("| %s | %d | %.4g | %s | %s | %s | %s | %s | %s | %s | %s | %s "
+              "| %s | %s | %s |" % (
+                  coverage.mesh_name(stl), len(triangles), size,
+                  text(rcpu) + (" (%s)" % rs if rs else ""),
+                  text(rst["classify"]), text(rst["geometry"]),
+                  text(rst["1D"]), text(rst["2D"]), stock,
+                  text(ccpu) + (" (%s)" % cs if cs else ""),
+                  text(rcpu / ccpu if ccpu else None, "%.1f"),
+                  text(rcpu / scpu if scpu else None, "%.2f"),
+                  text(rst["triangles"], "%d"), text(sst["triangles"], "%d"),
+                  text(ctri, "%d")))
+    print("\nTotal CPU: Reparam %.1f s, stock %.1f s, CGAL %.1f s."
+          % (total["reparam"], total["stock"], total["cgal"]))
+
+
+if __name__ == "__main__":
+    main()
