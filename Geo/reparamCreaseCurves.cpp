@@ -1,6 +1,9 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <array>
+#include <map>
+#include <set>
+#include "Context.h"
 #include "GFace.h"
 #include "GModel.h"
 #include "GmshMessage.h"
@@ -15,6 +18,20 @@
 
 namespace {
 
+  // The crease curves made, by model
+  std::map<const GModel *, std::set<const GEdge *> > &creaseCurves()
+  {
+    static std::map<const GModel *, std::set<const GEdge *> > curves;
+    return curves;
+  }
+
+  // The crease curves taken out of a face being recombined
+  std::map<GFace *, std::vector<GEdge *> > &hiddenCurves()
+  {
+    static std::map<GFace *, std::vector<GEdge *> > curves;
+    return curves;
+  }
+
   // The model point at p embedded in gf (a tip kept before), else a new
   // one, with its mesh node
   GVertex *pointAt(GFace *gf, const SPoint3 &p)
@@ -25,8 +42,8 @@ namespace {
     for(auto it = m->firstVertex(); it != m->lastVertex(); ++it)
       if((*it)->x() == p.x() && (*it)->y() == p.y() && (*it)->z() == p.z())
         return *it;
-    discreteVertex *v = new discreteVertex(
-      m, m->getMaxElementaryNumber(0) + 1, p.x(), p.y(), p.z());
+    discreteVertex *v = new discreteVertex(m, m->getMaxElementaryNumber(0) + 1,
+                                           p.x(), p.y(), p.z());
     m->add(v);
     MVertex *node = new MVertex(p.x(), p.y(), p.z(), v);
     v->mesh_vertices.push_back(node);
@@ -62,6 +79,7 @@ namespace {
       return false;
     }
     gf->addEmbeddedEdge(curve);
+    creaseCurves()[m].insert(curve);
     return true;
   }
 
@@ -95,4 +113,29 @@ int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
               "embedded curve%s",
               gf->tag(), added, added > 1 ? "s" : "", added > 1 ? "s" : "");
   return added;
+}
+
+void reparamHideCreaseCurvesFromQuads(GFace *gf)
+{
+  if(!CTX::instance()->mesh.recombineAll && !gf->meshAttributes.recombine)
+    return;
+  const std::set<const GEdge *> &creases = creaseCurves()[gf->model()];
+  std::vector<GEdge *> &embedded = gf->embeddedEdges();
+  std::vector<GEdge *> kept, hidden;
+  for(GEdge *ge : embedded) (creases.count(ge) ? hidden : kept).push_back(ge);
+  if(hidden.empty()) return;
+  embedded.swap(kept);
+  for(GEdge *ge : hidden) ge->deleteMesh();
+  hiddenCurves()[gf] = hidden;
+  Msg::Info("Reparam: surface %d: %lu crease curve%s not kept, for its "
+            "quadrangles",
+            gf->tag(), hidden.size(), hidden.size() > 1 ? "s" : "");
+}
+
+void reparamRestoreCreaseCurves(GFace *gf)
+{
+  auto it = hiddenCurves().find(gf);
+  if(it == hiddenCurves().end()) return;
+  for(GEdge *ge : it->second) gf->addEmbeddedEdge(ge);
+  hiddenCurves().erase(it);
 }

@@ -21,4 +21,12 @@ int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
                              const std::vector<SPoint3> &points,
                              const std::vector<int> &triangleNodes);
 
+// While gf is recombined into quadrangles (Mesh.RecombineAll or the face's
+// Recombine): its crease curves taken out of it and their 1D meshes
+// deleted (Blossom pairs no triangles across an embedded curve, so the
+// pieces the creases close off must each have an even count of triangles:
+// "Perfect Match failed" on fertility); the end puts the curves back
+void reparamHideCreaseCurvesFromQuads(GFace *gf);
+void reparamRestoreCreaseCurves(GFace *gf);
+
 #endif
