@@ -39,6 +39,11 @@ reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
     }
     solid.swap(kept);
   }
+  std::size_t left = 0;
+  for(const std::vector<SPoint3> &solid : points) left += solid.size() / 3;
+  if(!left)
+    Msg::Error("Reparam: the STL file has no complete facet with finite "
+               "coordinates: nothing to mesh");
   if(!dropped) return 0;
   bbox.reset();
   for(const std::vector<SPoint3> &solid : points)

@@ -159,3 +159,15 @@ TEST(reparamStlInput, reversedFacetsAreTurnedAndRepeatedOnesDropped)
   gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
   EXPECT_GT(edgesRunTwiceTheSameWay(), 0u);
 }
+
+TEST(reparamStlInput, anEmptyFileIsAnError)
+{
+  const std::string file = std::string(::testing::TempDir()) + "empty.stl";
+  FILE *fp = std::fopen(file.c_str(), "w");
+  ASSERT_NE(fp, nullptr);
+  std::fprintf(fp, "solid e\nendsolid e\n");
+  std::fclose(fp);
+  EXPECT_TRUE(mergeLogs(file, "Error: Reparam: the STL file has no complete "
+                              "facet with finite coordinates"));
+  std::remove(file.c_str());
+}
