@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include "GmshMessage.h"
+#include "SVector3.h"
 #include "facetOrientation.h"
 #include "reparamOptions.h"
 #include "reparamStlInput.h"
@@ -39,11 +40,21 @@ reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
     }
     solid.swap(kept);
   }
-  std::size_t left = 0;
-  for(const std::vector<SPoint3> &solid : points) left += solid.size() / 3;
+  std::size_t left = 0, flat = 0;
+  for(const std::vector<SPoint3> &solid : points)
+    for(std::size_t i = 0; i + 2 < solid.size(); i += 3) {
+      left++;
+      const SVector3 n = crossprod(SVector3(solid[i], solid[i + 1]),
+                                   SVector3(solid[i], solid[i + 2]));
+      flat += !(norm(n) > 0.);
+    }
   if(!left)
     Msg::Error("Reparam: the STL file has no complete facet with finite "
                "coordinates: nothing to mesh");
+  else if(flat == left)
+    Msg::Error("Reparam: the %lu facets of the STL file all have zero area: "
+               "nothing to mesh",
+               left);
   if(!dropped) return 0;
   bbox.reset();
   for(const std::vector<SPoint3> &solid : points)

@@ -16,7 +16,8 @@
 // points: per solid, 3 corners per facet. Drops the facets with a
 // non-finite corner and recomputes bbox when any was dropped; returns how
 // many were. An incomplete last facet (a file cut short) is dropped too,
-// with a warning; a file left without any facet is an error.
+// with a warning; a file left without any facet, or with zero-area ones
+// only, is an error.
 std::size_t
 reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
                             SBoundingBox3d &bbox);

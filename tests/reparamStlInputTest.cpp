@@ -171,3 +171,22 @@ TEST(reparamStlInput, anEmptyFileIsAnError)
                               "facet with finite coordinates"));
   std::remove(file.c_str());
 }
+
+TEST(reparamStlInput, aFileOfZeroAreaFacetsIsAnError)
+{
+  // collinear corners, and a repeated corner
+  std::vector<std::vector<SPoint3> > points = {
+    {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(2, 0, 0), SPoint3(0, 0, 0),
+     SPoint3(0, 0, 0), SPoint3(1, 1, 0)}};
+  SBoundingBox3d box;
+  gmsh::logger::start();
+  reparamDropInvalidStlFacets(points, box);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  gmsh::logger::stop();
+  bool error = false;
+  for(const auto &l : log)
+    error = error || l.find("the 2 facets of the STL file all have zero "
+                            "area") != std::string::npos;
+  EXPECT_TRUE(error);
+}
