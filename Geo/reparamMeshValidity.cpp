@@ -154,7 +154,7 @@ bool reparamKeepPlanarMesh(GFace *gf)
   if(100 * against > gf->triangles.size()) {
     // Gmsh would remesh it with MeshAdapt: only if that has fewer
     meshDefects defects;
-    defects.againstInput = countTrianglesAgainstInput(gf);
+    defects.againstInput = left; // the mesh the repair left, unchanged since
     reparamTryOtherMesher(gf, defects, ALGO_2D_MESHADAPT);
     return true;
   }

@@ -9,7 +9,6 @@
 #include "GFace.h"
 #include "GModel.h"
 #include "GmshDefines.h"
-#include "GVertex.h"
 #include "GmshMessage.h"
 #include "MLine.h"
 #include "MVertex.h"
@@ -94,20 +93,41 @@ namespace {
     return true;
   }
 
-  // The ends of m's discrete curves shorter than the size asked along them,
-  // with the length of their segments
-  std::unique_ptr<gradedBoundarySize> shortCurveEnds(GModel *m, double gradient)
+  // A curve's mesh with more segments than this is refused: Gmsh would
+  // spend hours and gigabytes on it (coordinates of 1e30 with the default
+  // Mesh.MeshSizeMax of 1e22: 4e8 segments on a square's side)
+  const double mostSegments = 1e7;
+
+  // The curves refused, with their meshing method, restored after Mesh1D
+  std::vector<std::pair<GEdge *, int> > refusedCurves;
+
+  // One pass over m's discrete curves: the ones whose mesh would have more
+  // than mostSegments segments refused (an error each), and, with a
+  // gradient, the ends of those shorter than the size asked along them,
+  // with the length of their segments, as the sources of the curves' sizes
+  std::unique_ptr<gradedBoundarySize> measureCurves(GModel *m, double gradient)
   {
     const int segments = std::max(1, CTX::instance()->mesh.minCurveNodes - 1);
     std::vector<SPoint3> ends;
     std::vector<double> sizes;
     double reach = 0.;
     for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
+      GEdge *ge = *it;
       std::vector<SPoint3> polyline;
       double length, size;
-      if(!measureCurve(*it, polyline, length, size)) continue;
+      if(!measureCurve(ge, polyline, length, size)) continue;
+      if(length / size > mostSegments) {
+        Msg::Error("Reparam: curve %d would get %.3g segments (length %g, "
+                   "mesh size %g): not meshed. Set Mesh.MeshSizeMax (or "
+                   "Mesh.MeshSizeFactor) to the model's scale",
+                   ge->tag(), length / size, length, size);
+        refusedCurves.push_back({ge, ge->meshAttributes.method});
+        ge->meshAttributes.method = MESH_NONE;
+        continue;
+      }
       reach = std::max(reach, size);
-      if(length <= 0. || length >= nearlyTheSize * size) continue;
+      if(gradient <= 0. || length <= 0. || length >= nearlyTheSize * size)
+        continue;
       for(const SPoint3 &p : {polyline.front(), polyline.back()}) {
         ends.push_back(p);
         sizes.push_back(length / segments);
@@ -117,44 +137,15 @@ namespace {
       new gradedBoundarySize(ends, sizes, gradient, reach));
   }
 
-  // A curve's mesh with more segments than this is refused: Gmsh would
-  // spend hours and gigabytes on it (coordinates of 1e30 with the default
-  // Mesh.MeshSizeMax of 1e22: 4e8 segments on a square's side)
-  const double mostSegments = 1e7;
-
-  // The curves refused, with their meshing method, restored after Mesh1D
-  std::vector<std::pair<GEdge *, int> > refusedCurves;
-
-  void refuseHugeCurveMeshes(GModel *m)
-  {
-    for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
-      GEdge *ge = *it;
-      std::vector<SPoint3> polyline;
-      double length, size;
-      if(!measureCurve(ge, polyline, length, size) ||
-         !(length / size > mostSegments))
-        continue;
-      Msg::Error("Reparam: curve %d would get %.3g segments (length %g, mesh "
-                 "size %g): not meshed. Set Mesh.MeshSizeMax (or "
-                 "Mesh.MeshSizeFactor) to the model's scale",
-                 ge->tag(), length / size, length, size);
-      refusedCurves.push_back({ge, ge->meshAttributes.method});
-      ge->meshAttributes.method = MESH_NONE;
-    }
-  }
-
 } // namespace
 
 void reparamBeginCurveSizeGrading(GModel *m)
 {
-  if(getReparamOptions().parametrization != (int)compoundParametrization::gmsh)
-    refuseHugeCurveMeshes(m);
-  const double gradient = getReparamOptions().meshSizeGradient;
-  if(gradient <= 0. ||
-     getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+  if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return;
-  std::unique_ptr<gradedBoundarySize> size = shortCurveEnds(m, gradient);
-  if(!size->size()) return;
+  const double gradient = getReparamOptions().meshSizeGradient;
+  std::unique_ptr<gradedBoundarySize> size = measureCurves(m, gradient);
+  if(gradient <= 0. || !size->size()) return;
   Msg::Debug("Reparam: curve sizes graded from the ends of %lu short curves",
              size->size() / 2);
   curves.size = std::move(size);
