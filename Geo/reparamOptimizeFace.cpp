@@ -6,9 +6,11 @@
 #include "GmshMessage.h"
 #include "MTriangle.h"
 #include "MVertex.h"
+#include "GEdge.h"
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "reparamCurveMesh.h"
 #include "reparamInputMesh.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeFace.h"
@@ -17,6 +19,21 @@
 #include "surfaceMeshOptimizer.h"
 
 namespace {
+
+  // Whether gf shares a smooth cut with another face Reparam parametrized:
+  // the faces' optimization across their cuts (Geo/reparamOptimizeAcrossCuts.h)
+  // will smooth gf's nodes with the cuts' free
+  bool joinedByCut(GFace *gf)
+  {
+    for(GEdge *ge : gf->edges()) {
+      const std::vector<GFace *> sides = ge->faces();
+      if(sides.size() != 2 || !reparamIsCrossableCurve(ge)) continue;
+      GFace *other = sides[0] == gf ? sides[1] : sides[0];
+      const parametrizationRecord *map = findParametrization(other);
+      if(other != gf && map && map->map > 0) return true;
+    }
+    return false;
+  }
 
   // The (u, v) of point p of gf's input, as gf's parametric interface
   // knows it: Gmsh replaces the map of a planar face by coordinates on its
@@ -114,9 +131,9 @@ bool reparamOptimizeMeshedFace(GFace *gf)
   // 2: coarsen too where the curves' short segments made the mesh finer
   // than asked (fewer triangles, edges closer to the size; slower)
   o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;
+  if(joinedByCut(gf)) o.smoothPasses = 0;
   const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);
-  if(r.flips || r.moves || r.inserted || r.splits || r.collapses ||
-     r.cavities)
+  if(r.flips || r.moves || r.inserted || r.splits || r.collapses || r.cavities)
     writeBack(gf, m, nodes);
   optimizationRecord done;
   done.done = true;

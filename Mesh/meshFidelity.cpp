@@ -120,15 +120,24 @@ namespace {
 
 } // namespace
 
-bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
-                          const SPoint3 &c, const surfaceMesh &input,
+bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
+                          const surfaceMesh &input,
                           const closestTriangleSearch &onInput)
+{
+  return triangleAgainstInput(a, b, c, input, onInput,
+                              onInput.closest((a + b + c) * (1. / 3.)));
+}
+
+bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
+                          const surfaceMesh &input,
+                          const closestTriangleSearch &onInput,
+                          const closestTriangleHit &atCentroid)
 {
   surfaceMesh m;
   m.points = {a, b, c};
   const std::array<int, 3> t = {{0, 1, 2}};
   return pointsAgainst<3>(m, t, triangleNormal(m, t), input, onInput,
-                          onInput.closest(centroid<3>(m, t)));
+                          atCentroid);
 }
 
 surfaceMesh surfaceMeshOf(const GFace *gf)

@@ -54,8 +54,7 @@ surfaceMesh unionAsTriangles(const std::vector<surfaceMesh> &meshes,
                              std::vector<int> *elementPart = nullptr);
 
 // (knownInverted: meshFidelity::inverted as already counted, not searched)
-meshFidelity compareToInput(const surfaceMesh &input,
-                            const surfaceMesh &output,
+meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output,
                             const std::size_t *knownInverted = nullptr);
 
 // Only the two-sided distances (no inverted count) of several meshed faces
@@ -74,9 +73,16 @@ compareDistancesToInput(const std::vector<surfaceMesh> &inputs,
 // Whether the triangle (a, b, c) points against the input under it (the
 // test meshFidelity::inverted counts with)
 class closestTriangleSearch;
-bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
-                          const SPoint3 &c, const surfaceMesh &input,
+bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
+                          const surfaceMesh &input,
                           const closestTriangleSearch &onInput);
+// The same, given the input's closest point to the triangle's centroid (a
+// caller measuring the triangle's distance to the input has it)
+struct closestTriangleHit;
+bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
+                          const surfaceMesh &input,
+                          const closestTriangleSearch &onInput,
+                          const closestTriangleHit &atCentroid);
 
 // Only meshFidelity::inverted (N + 1 closest-triangle searches per element
 // of N corners)

@@ -68,6 +68,7 @@ namespace {
 
     bool tryFlips(int t);
     bool tryMove(int v);
+    bool trySmooth(int v, double gain);
     bool spent() const { return _searches >= _budget; }
     void addNeighbours(int v, std::set<int> &to) const
     {
@@ -112,7 +113,22 @@ namespace {
     std::pair<double, double> ringKappa(int v, const SPoint3 &at) const;
     SPoint3 worstTriangleApex(int v) const;
     bool starKernelPoint(int v, SPoint3 &at) const;
-    double ringFarthest(int v, const SPoint3 &at, bool &valid) const;
+    double ringFarthest(int v, const SPoint3 &at, double tolerance,
+                        bool checkAgainst, bool &valid,
+                        std::vector<closestTriangleHit> *hits = nullptr) const;
+    SPoint3 ringCentroid(int v) const;
+    SPoint3 ringApexMean(int v) const;
+    double ringLongestEdge(int v) const
+    {
+      double l = 0.;
+      for(int t : _around[v]) {
+        const std::array<int, 3> &c = _m.triangles[t];
+        l = std::max(
+          l, longestEdge(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]));
+      }
+      return l;
+    }
+    double distanceToRing(int v, const SPoint3 &at, const SPoint3 &p) const;
   };
 
   int optimizer::neighbourAcross(int t, int a, int b) const
@@ -275,21 +291,175 @@ namespace {
   }
 
   // The largest distance of the centroids of the triangles around v (v at
-  // `at`) to the input, less the tolerance times their longest edge;
-  // `valid`: none of them points against the input
-  double optimizer::ringFarthest(int v, const SPoint3 &at, bool &valid) const
+  // `at`) to the input, less `tolerance` times their longest edge; `valid`:
+  // none of them points against the input (tested only if `checkAgainst`)
+  double optimizer::ringFarthest(int v, const SPoint3 &at, double tolerance,
+                                 bool checkAgainst, bool &valid,
+                                 std::vector<closestTriangleHit> *hits) const
   {
     double farthest = 0.;
     valid = true;
+    if(hits) hits->clear();
     for(int t : _around[v]) {
       SPoint3 c[3];
       cornersWith(_m.triangles[t], v, at, _m.points, c);
-      if(against(c[0], c[1], c[2])) valid = false;
-      farthest =
-        std::max(farthest, distanceToInput(centroidOf(c[0], c[1], c[2])) -
-                             _o.moveTolerance * longestEdge(c[0], c[1], c[2]));
+      _searches++;
+      const closestTriangleHit hit =
+        _onInput.closest(centroidOf(c[0], c[1], c[2]));
+      if(hits) hits->push_back(hit);
+      if(checkAgainst) {
+        _searches += 3;
+        if(triangleAgainstInput(c[0], c[1], c[2], _input, _onInput, hit) !=
+           _o.reversed)
+          valid = false;
+      }
+      farthest = std::max(
+        farthest, hit.distance - tolerance * longestEdge(c[0], c[1], c[2]));
     }
     return farthest;
+  }
+
+  // The mean over the triangles around v of the point that makes each
+  // equilateral (over the middle of the edge opposite v, on v's side, in the
+  // plane of the ring)
+  SPoint3 optimizer::ringApexMean(int v) const
+  {
+    const std::vector<SPoint3> &x = _m.points;
+    SVector3 normal(0., 0., 0.);
+    for(int t : _around[v]) {
+      const std::array<int, 3> &c = _m.triangles[t];
+      normal +=
+        crossprod(SVector3(x[c[0]], x[c[1]]), SVector3(x[c[0]], x[c[2]]));
+    }
+    if(norm(normal) == 0.) return x[v];
+    normal.normalize();
+    SPoint3 mean(0., 0., 0.);
+    for(int t : _around[v]) {
+      const std::array<int, 3> &c = _m.triangles[t];
+      int k = 0;
+      while(c[k] != v) k++;
+      // (v, a, b) in the triangle's order: v lies on the side n x (b - a)
+      const SPoint3 &a = x[c[(k + 1) % 3]], &b = x[c[(k + 2) % 3]];
+      SVector3 side = crossprod(normal, SVector3(a, b));
+      if(norm(side) > 0.)
+        side *= 0.5 * std::sqrt(3.) * a.distance(b) / norm(side);
+      const SPoint3 middle = (a + b) * 0.5;
+      mean += SPoint3(middle.x() + side.x(), middle.y() + side.y(),
+                      middle.z() + side.z());
+    }
+    return mean * (1. / _around[v].size());
+  }
+
+  // The distance of p to the triangles around v with v at `at`
+  double optimizer::distanceToRing(int v, const SPoint3 &at,
+                                   const SPoint3 &p) const
+  {
+    double nearest = -1.;
+    for(int t : _around[v]) {
+      SPoint3 c[3];
+      cornersWith(_m.triangles[t], v, at, _m.points, c);
+      const double d = p.distance(closestPointOnTriangle(p, c[0], c[1], c[2]));
+      if(nearest < 0. || d < nearest) nearest = d;
+    }
+    return nearest;
+  }
+
+  // The centroid of v's neighbours
+  SPoint3 optimizer::ringCentroid(int v) const
+  {
+    SPoint3 centroid(0., 0., 0.);
+    std::set<int> neighbours;
+    for(int t : _around[v])
+      for(int w : _m.triangles[t])
+        if(w != v) neighbours.insert(w);
+    for(int w : neighbours) centroid += _m.points[w];
+    centroid *= 1. / neighbours.size();
+    return centroid;
+  }
+
+  // v moved to its neighbours' centroid or halfway there, on the input, if
+  // the mean kappa around it rises by `gain`, the worst does not fall, no
+  // triangle falls below the target and none gets farther from the input.
+  // Most nodes of a frontal mesh gain nothing: a position is searched on the
+  // input only if it would be better before the search (the search moves it
+  // by the input's sag, small against the triangles around)
+  bool optimizer::trySmooth(int v, double gain)
+  {
+    if(spent()) return false;
+    if(!_m.movable[v] || _around[v].empty() || !_dirty[v]) return false;
+    _dirty[v] = false;
+    for(int t : _around[v])
+      if(_m.against[t]) return false; // tryMove's
+    struct ring {
+      double worst = 1., sum = 0.;
+      int below = 0;
+    };
+    auto ringAt = [&](const SPoint3 &at) {
+      ring r;
+      for(int t : _around[v]) {
+        SPoint3 c[3];
+        cornersWith(_m.triangles[t], v, at, _m.points, c);
+        const double k = triangleKappa(c[0], c[1], c[2]);
+        r.worst = std::min(r.worst, k);
+        r.sum += k;
+        r.below += k < _o.target;
+      }
+      return r;
+    };
+    const SPoint3 here = _m.points[v];
+    const ring before = ringAt(here);
+    const double sumGain = gain * _around[v].size();
+    auto better = [&](const SPoint3 &at) {
+      const ring after = ringAt(at);
+      return after.worst >= before.worst && after.below <= before.below &&
+             after.sum >= before.sum + sumGain;
+    };
+    // the neighbours' centroid evens the edges, the mean of the points that
+    // make each triangle equilateral evens the angles; halfway to each
+    const SPoint3 centroid = ringCentroid(v), apex = ringApexMean(v);
+    std::vector<std::pair<double, SPoint3> > targets;
+    for(const SPoint3 &to :
+        {apex, centroid, (here + apex) * 0.5, (here + centroid) * 0.5})
+      if(better(to)) targets.push_back(std::make_pair(-ringAt(to).sum, to));
+    std::sort(
+      targets.begin(), targets.end(),
+      [](const std::pair<double, SPoint3> &a,
+         const std::pair<double, SPoint3> &b) { return a.first < b.first; });
+    double farthestHere = -1.;
+    bool valid;
+    // the input's points closest to the ring's centroids: where a crease
+    // under the feature angle runs, those on it
+    std::vector<closestTriangleHit> held;
+    for(const auto &target : targets) {
+      const SPoint3 &to = target.second;
+      _searches++;
+      const closestTriangleHit hit = _onInput.closest(to);
+      if(hit.triangle < 0 || !better(hit.point)) continue;
+      // no triangle farther from the input (as tryMove: beyond a share of
+      // its size, the sag of a larger triangle on a curved input); none
+      // against the input here
+      if(farthestHere < 0.)
+        farthestHere = std::max(
+          ringFarthest(v, here, _o.moveTolerance, false, valid, &held), 0.);
+      if(ringFarthest(v, hit.point, _o.moveTolerance, true, valid) >
+           farthestHere ||
+         !valid)
+        continue;
+      // nor the input left behind: where v was (a point of the input: a
+      // tip) and the input's points the ring held stay as close to it, but
+      // for a small share of its size
+      const double tolerance = _o.smoothTolerance * ringLongestEdge(v);
+      bool holds = distanceToRing(v, hit.point, here) <= tolerance;
+      for(std::size_t k = 0; k < held.size() && holds; k++)
+        holds = distanceToRing(v, hit.point, held[k].point) <=
+                held[k].distance + tolerance;
+      if(!holds) continue;
+      _m.points[v] = hit.point;
+      _m.landing[v] = hit.triangle;
+      changedAround(v);
+      return true;
+    }
+    return false;
   }
 
   // v moved to its neighbours' centroid or halfway there, on the input, if
@@ -300,13 +470,7 @@ namespace {
     if(spent()) return false;
     if(!_m.movable[v] || _around[v].empty() || !_dirty[v]) return false;
     _dirty[v] = false; // until something around it changes
-    SPoint3 centroid(0., 0., 0.);
-    std::set<int> neighbours;
-    for(int t : _around[v])
-      for(int w : _m.triangles[t])
-        if(w != v) neighbours.insert(w);
-    for(int w : neighbours) centroid += _m.points[w];
-    centroid *= 1. / neighbours.size();
+    const SPoint3 centroid = ringCentroid(v);
     const SPoint3 here = _m.points[v];
     // better: the worst triangle around v better, or as good and the mean
     // better (the worst may be held by nodes that do not move)
@@ -344,9 +508,11 @@ namespace {
                 return a.first > b.first;
               });
     bool valid;
-    const double farthestHere = std::max(ringFarthest(v, here, valid), 0.);
+    const double farthestHere =
+      std::max(ringFarthest(v, here, _o.moveTolerance, true, valid), 0.);
     for(const auto &b : better) {
-      const double farthest = ringFarthest(v, b.second.point, valid);
+      const double farthest =
+        ringFarthest(v, b.second.point, _o.moveTolerance, true, valid);
       if(!valid || farthest > farthestHere) continue;
       _m.points[v] = b.second.point;
       _m.landing[v] = b.second.triangle;
@@ -448,6 +614,25 @@ namespace {
     }
   }
 
+  // Every movable node moved where its ring's mean kappa rises and its worst
+  // does not fall, sweep after sweep
+  void smoothMesh(optimizableMesh &m, const surfaceMesh &input,
+                  const closestTriangleSearch &onInput,
+                  const meshOptimizationOptions &o, meshOptimizationResult &r)
+  {
+    std::size_t searches = 0;
+    optimizer opt(m, input, onInput, o, searches,
+                  o.searchesPerTriangle * m.triangles.size() + 1000);
+    for(int pass = 0; pass < o.smoothPasses && !opt.spent(); pass++) {
+      std::size_t changes = 0;
+      for(std::size_t v = 0; v < m.points.size(); v++)
+        changes += opt.trySmooth((int)v, o.smoothGain);
+      r.moves += changes;
+      if(!changes) break;
+    }
+    r.searches += searches;
+  }
+
   // Triangles of m below the target, and pointing against the input
   void countPoorTriangles(const optimizableMesh &m,
                           const meshOptimizationOptions &o, std::size_t &below,
@@ -484,6 +669,7 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
   }
   m.against.resize(m.triangles.size());
   for(std::size_t t = 0; t < m.triangles.size(); t++) {
+    if(t < o.knownAlong.size() && o.knownAlong[t]) continue;
     const std::array<int, 3> &c = m.triangles[t];
     m.against[t] =
       triangleAgainstInput(m.points[c[0]], m.points[c[1]], m.points[c[2]],
@@ -519,6 +705,12 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
       improvePoorTriangles(m, input, onInput, o, r, centers);
       countPoorTriangles(m, o, r.belowAfter, r.againstAfter);
     }
+  }
+  if(o.smoothPasses > 0) {
+    smoothMesh(m, input, onInput, o, r);
+    // the moves smoothing made free others around the worst triangles
+    improvePoorTriangles(m, input, onInput, o, r, {});
+    countPoorTriangles(m, o, r.belowAfter, r.againstAfter);
   }
   r.minAfter = worstKappa(m);
   return r;

@@ -62,6 +62,9 @@ struct meshOptimizationOptions {
   double moveTolerance = 0.1;
   // the mesh's triangles turn against the input's (most of them do)
   bool reversed = false;
+  // per triangle, whether the caller knows it lies along the input (it was
+  // checked already): not tested again (empty: all are tested)
+  std::vector<bool> knownAlong;
   // inner input nodes farther from the mesh than this share of the edges
   // around are inserted (a crease or tip the mesh cuts off; 0: none)
   double insertAbove = 0.25;
@@ -73,6 +76,22 @@ struct meshOptimizationOptions {
   // the flips and moves stop after this many searches of the input per
   // triangle (with 1000 more), counted over all rounds
   std::size_t searchesPerTriangle = 30;
+  // then sweeps moving every movable node to its neighbours' centroid (or
+  // halfway) where the mean kappa of its ring rises by smoothGain and the
+  // worst does not fall: the rows of triangles along the curves, which the
+  // frontal mesher left uneven and the targeted moves do not reach (over
+  // three rings of the curves, fertility's kappa mean was 0.956, its
+  // inner triangles' 0.982; 3 sweeps: 0.971, at 8 % more time)
+  int smoothPasses = 3;
+  double smoothGain = 1e-3;
+  // a smoothing move takes no triangle farther from the input (as a node
+  // move, moveTolerance), and leaves the node's old place and the input's
+  // points closest to the ring's centroids (on a crease under the feature
+  // angle the mesh held, points of the crease) no farther from the ring
+  // than this share of its longest edge beyond where they were (0.05:
+  // gmsh2x_linkrod2's Hausdorff distance 0.48 -> 0.57 % of the diagonal;
+  // 0: no smoothing on a curved input)
+  double smoothTolerance = 0.02;
 };
 
 struct meshOptimizationResult {
@@ -90,11 +109,11 @@ struct meshOptimizationResult {
 // Optimizes m in place against the input triangulation `input` (searched by
 // onInput, built on it): inserts the inner input nodes the mesh cuts off
 // (Mesh/farInputNodes.h), splits the long edges (Mesh/longEdgeSplit.h) and
-// collapses the short ones (Mesh/shortEdgeCollapse.h), then flips edges not locked and moves movable
-// nodes to their neighbours' centroid (or halfway), projected on the input,
-// around the triangles below the target or pointing against the input
-// (which count as worse than any triangle along it), pass after pass until
-// a pass keeps no change; then again while nodes are added
+// collapses the short ones (Mesh/shortEdgeCollapse.h), then flips edges not
+// locked and moves movable nodes to their neighbours' centroid (or halfway),
+// projected on the input, around the triangles below the target or pointing
+// against the input (which count as worse than any triangle along it), pass
+// after pass until a pass keeps no change; then again while nodes are added
 meshOptimizationResult optimizeOnInput(optimizableMesh &m,
                                        const surfaceMesh &input,
                                        const closestTriangleSearch &onInput,
