@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <string>
 #include "GEdge.h"
 #include "GFace.h"
@@ -19,6 +20,7 @@
 #include "reparamMeshValidity.h"
 #include "reparamOptimizeFace.h"
 #include "reparamReport.h"
+#include "reparamSizeGrading.h"
 
 std::size_t countElementsAgainstFaceNormals(GFace *gf)
 {
@@ -106,6 +108,28 @@ namespace {
 
 namespace {
 
+  // A face whose mesh has edges longer than twice the size, none against
+  // the input: the planar mesher did not fill it (a hole's wall of needle
+  // triangles as tall as four sizes, whose (u, v) image squeezes its height:
+  // Frontal-Delaunay found no point to insert, and left 16 triangles across
+  // the wall, kappa min 0.17; MeshAdapt fills it). The other planar mesher,
+  // then MeshAdapt, each kept if it does better (logged)
+  void fillWithAnotherMesher(GFace *gf)
+  {
+    meshDefects defects;
+    defects.longEdges = countLongEdges(gf);
+    if(!defects.longEdges) return;
+    Msg::Info("Reparam: surface %d: the planar mesh leaves %lu edges longer "
+              "than twice the size",
+              gf->tag(), defects.longEdges);
+    if(reparamTryOtherMesher(gf, defects)) {
+      defects.againstInput = countTrianglesAgainstInput(gf);
+      defects.longEdges = countLongEdges(gf);
+      if(defects.againstInput || !defects.longEdges) return;
+    }
+    reparamTryOtherMesher(gf, defects, ALGO_2D_MESHADAPT);
+  }
+
   // A triangle mesh of a face Reparam parametrized: Gmsh's map keeps Gmsh's
   // behaviour (the reference)
   bool isReparamTriangleMesh(GFace *gf)
@@ -133,7 +157,10 @@ bool reparamKeepPlanarMesh(GFace *gf)
   // every triangle
   reparamOptimizeMeshedFace(gf);
   const optimizationRecord *o = findOptimization(gf);
-  if(o && !o->againstAfter) return true;
+  if(o && !o->againstAfter) {
+    fillWithAnotherMesher(gf);
+    return true;
+  }
   const std::size_t left = repairInvertedTriangles(gf);
   if(!left) return true;
   // MeshAdapt, for this face only, where it leaves fewer
@@ -162,6 +189,28 @@ bool reparamKeepPlanarMesh(GFace *gf)
             "against the normals at their nodes (no MeshAdapt remesh)",
             gf->tag(), against, gf->triangles.size());
   return true;
+}
+
+std::size_t countLongEdges(GFace *gf)
+{
+  std::map<MVertex *, double> size;
+  auto sizeAt = [&](MVertex *v) {
+    auto it = size.find(v);
+    if(it != size.end()) return it->second;
+    const double s = reparamUngradedMeshSize(gf, v->point());
+    size[v] = s;
+    return s;
+  };
+  std::set<std::pair<MVertex *, MVertex *> > seen;
+  std::size_t count = 0;
+  for(MTriangle *t : gf->triangles)
+    for(int k = 0; k < 3; k++) {
+      MVertex *a = t->getVertex(k), *b = t->getVertex((k + 1) % 3);
+      if(!seen.insert(std::make_pair(std::min(a, b), std::max(a, b))).second)
+        continue;
+      count += a->distance(b) > (sizeAt(a) + sizeAt(b));
+    }
+  return count;
 }
 
 std::size_t countUnusedCurveSegments(GFace *gf)

@@ -26,13 +26,21 @@ std::size_t countElementsAgainstFaceNormals(GFace *gf);
 // left (Mesh/invertedElementRepair), then true if none is left; else tries
 // the other planar mesher (Geo/reparamMesherFallback.h), then the input's
 // own triangles (Geo/reparamInputMesh.h); true if at most 1 % of the
-// elements fail Gmsh's test: the mesh is kept (logged)
+// elements fail Gmsh's test: the mesh is kept (logged). A mesh with edges
+// longer than twice the size (countLongEdges) is compared with the other
+// planar mesher's, then MeshAdapt's
 bool reparamKeepPlanarMesh(GFace *gf);
 
 // The segments of gf's curves its triangles use fewer times than the curve
 // bounds it (once; twice for a curve on both sides, a slit, and for an
 // embedded curve)
 std::size_t countUnusedCurveSegments(GFace *gf);
+
+// The edges of gf's triangles longer than twice the size asked at their
+// ends (BGM_MeshSize without the grading from short curves, which the
+// meshers follow loosely): where the planar mesher put no node inside the
+// face (the optimization splits those longer than 1.6 times the size)
+std::size_t countLongEdges(GFace *gf);
 
 // For a discrete face Reparam parametrized: whether its planar mesh leaves
 // a segment of its curves unused, a hole at it (Frontal-Delaunay across a

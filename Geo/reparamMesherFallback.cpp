@@ -69,6 +69,9 @@ namespace {
       text += "triangles against the input not counted";
     else
       text += std::to_string(d.againstInput) + " triangles against the input";
+    if(d.longEdges)
+      text += ", " + std::to_string(d.longEdges) +
+              " edges longer than twice the size";
     return text;
   }
 
@@ -102,6 +105,7 @@ bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
   meshDefects found;
   found.unusedCurveSegments = countUnusedCurveSegments(gf);
   found.againstInput = countTrianglesAgainstInput(gf);
+  found.longEdges = countLongEdges(gf);
   if(!gf->triangles.empty() && found < current) {
     destroy(kept);
     Msg::Info("Reparam: surface %d: remeshed with %s: %s -> %s", gf->tag(),

@@ -21,11 +21,13 @@ class GFace;
 struct meshDefects {
   std::size_t unusedCurveSegments = 0; // holes
   std::size_t againstInput = 0;
+  std::size_t longEdges = 0; // a face the mesher did not fill
   bool operator<(const meshDefects &o) const
   {
-    return unusedCurveSegments != o.unusedCurveSegments ?
-             unusedCurveSegments < o.unusedCurveSegments :
-             againstInput < o.againstInput;
+    if(unusedCurveSegments != o.unusedCurveSegments)
+      return unusedCurveSegments < o.unusedCurveSegments;
+    if(againstInput != o.againstInput) return againstInput < o.againstInput;
+    return longEdges < o.longEdges;
   }
 };
 

@@ -32,6 +32,8 @@ namespace {
     std::unique_ptr<gradedBoundarySize> size;
   };
   thread_local grading current;
+  // reparamUngradedMeshSize is asking
+  thread_local bool ungraded = false;
 
   // The nodes of gf's curves (embedded ones too) whose shortest segment is
   // shorter than the size asked there, with that length (Gmsh's size of a
@@ -197,6 +199,14 @@ void reparamEndSizeGrading(GFace *gf)
 double reparamGradedMeshSize(GEntity *ge, double x, double y, double z,
                              double size)
 {
-  if(!current.face || ge != current.face) return size;
+  if(!current.face || ge != current.face || ungraded) return size;
   return (*current.size)(SPoint3(x, y, z), size);
+}
+
+double reparamUngradedMeshSize(GFace *gf, const SPoint3 &x)
+{
+  ungraded = true;
+  const double size = BGM_MeshSize(gf, 0., 0., x.x(), x.y(), x.z());
+  ungraded = false;
+  return size;
 }

@@ -46,4 +46,9 @@ double reparamGradedCurveSize(const GEdge *ge, const SPoint3 &x, double size);
 double reparamGradedMeshSize(GEntity *ge, double x, double y, double z,
                              double size);
 
+// The size BGM_MeshSize gives at x on gf without the grading above (while
+// gf is meshed: the size fields and options, not extended from the
+// boundary)
+double reparamUngradedMeshSize(GFace *gf, const SPoint3 &x);
+
 #endif

@@ -1,6 +1,7 @@
 // Reparam - a face's planar mesh that leaves a hole or triangles against
 // the input compared with the other planar mesher's, the better kept
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include "GFace.h"
 #include "GModel.h"
@@ -9,6 +10,7 @@
 #include "gmshTestEnvironment.h"
 #include "reparamMeshValidity.h"
 #include "reparamMesherFallback.h"
+#include "testPatches.h"
 
 namespace {
 
@@ -63,4 +65,63 @@ TEST(reparamMesherFallback, theOtherMesherIsKeptOnlyWhenBetter)
   EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
   EXPECT_EQ(countTrianglesAgainstInput(gf), 0u);
   EXPECT_TRUE(freeMeshEdges().size() > 0u); // the square's sides only
+}
+
+namespace {
+
+  // A closed cylinder (radius 0.126, height 0.75) whose wall is one row of
+  // 72 needle triangles as tall as the cylinder, as CAD exports a hole's
+  // wall; its caps fans around their centres
+  testTriangulation needleCylinder()
+  {
+    const int n = 36;
+    const double r = 0.126, height = 0.75;
+    testTriangulation t;
+    for(int level = 0; level < 2; level++)
+      for(int i = 0; i < n; i++)
+        t.points.push_back(SPoint3(r * std::cos(2. * M_PI * i / n),
+                                   r * std::sin(2. * M_PI * i / n),
+                                   level * height));
+    t.points.push_back(SPoint3(0., 0., 0.));
+    t.points.push_back(SPoint3(0., 0., height));
+    for(int i = 0; i < n; i++) {
+      const int j = (i + 1) % n;
+      t.triangles.push_back({{i, j, n + j}});
+      t.triangles.push_back({{i, n + j, n + i}});
+      t.triangles.push_back({{2 * n, j, i}});
+      t.triangles.push_back({{2 * n + 1, n + i, n + j}});
+    }
+    return t;
+  }
+
+} // namespace
+
+TEST(reparamMeshValidity, aFaceTheMesherDidNotFillIsMeshedAgain)
+{
+  // Frontal-Delaunay finds no point to insert in the wall's (u, v) image
+  // and leaves triangles across the whole wall (four sizes tall, kappa
+  // 0.24): the long edges are counted and the wall is meshed again, by
+  // MeshAdapt here
+  const double size = 0.189;
+  const std::vector<std::string> log = remeshWithRecipe(needleCylinder(), size);
+  bool counted = false, remeshed = false;
+  for(const std::string &line : log) {
+    counted = counted || line.find("edges longer than twice the size") !=
+                           std::string::npos;
+    remeshed = remeshed || line.find("remeshed with") != std::string::npos;
+  }
+  EXPECT_TRUE(counted);
+  EXPECT_TRUE(remeshed);
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  EXPECT_TRUE(freeMeshEdges().empty()); // closed
+  double worst = 1.;
+  std::size_t longEdges = 0;
+  GModel *m = GModel::current();
+  for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+    longEdges += countLongEdges(*it);
+    for(MTriangle *t : (*it)->triangles)
+      worst = std::min(worst, t->gammaShapeMeasure());
+  }
+  EXPECT_EQ(longEdges, 0u);
+  EXPECT_GT(worst, 0.5);
 }
