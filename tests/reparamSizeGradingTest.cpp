@@ -125,9 +125,15 @@ namespace {
 
   // The lengths of the segments of curve 2 (the bottom side from the short
   // curve's end at x = 0.02 to the corner), from that end on
-  std::vector<double> bottomSegments(double gradient)
+  std::vector<double> bottomSegments(double gradient, bool tip = false)
   {
     squareWithAShortCurve();
+    if(tip) {
+      // a point embedded in the square 0.03 above the bottom side's middle
+      gmsh::model::addDiscreteEntity(0, 10);
+      gmsh::model::mesh::addNodes(0, 10, {100000}, {0.5, 0.03, 0.});
+      gmsh::model::mesh::embed(0, {10}, 2, 1);
+    }
     gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
     gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
@@ -162,6 +168,31 @@ TEST(reparamSizeGrading, curveSizesGrowFromTheEndsOfShortCurves)
   const std::vector<double> even = bottomSegments(0.);
   EXPECT_GT(even.front(), 0.09);
   EXPECT_LT(even.size(), graded.size());
+}
+
+TEST(reparamSizeGrading, aCurveGetsFinerNearAPointEmbeddedCloseToIt)
+{
+  // a tip kept as a node 0.03 from the bottom side (a third of the size):
+  // the side's segments there about that long, not one triangle of 0.1
+  // across; away from it the size again
+  const std::vector<double> plain = bottomSegments(0.5);
+  const std::vector<double> withTip = bottomSegments(0.5, true);
+  auto shortestNear = [](const std::vector<double> &lengths, double x0) {
+    double x = 0.02, shortest = 1.;
+    for(double l : lengths) {
+      if(std::fabs(x + 0.5 * l - x0) < 0.1) shortest = std::min(shortest, l);
+      x += l;
+    }
+    return shortest;
+  };
+  EXPECT_GT(shortestNear(plain, 0.5), 0.08);
+  EXPECT_LT(shortestNear(withTip, 0.5), 0.045);
+  EXPECT_GT(shortestNear(withTip, 0.5), 0.02);
+  EXPECT_NEAR(withTip.back(), 0.1, 0.02);
+  for(std::size_t i = 0; i + 1 < withTip.size(); i++) {
+    EXPECT_LT(withTip[i + 1], 2. * withTip[i]) << i; // no jump
+    EXPECT_LT(withTip[i], 2. * withTip[i + 1]) << i;
+  }
 }
 
 TEST(reparamSizeGrading, aCurveMeshOfBillionsOfSegmentsIsRefused)
