@@ -118,6 +118,21 @@ namespace {
                         std::vector<closestTriangleHit> *hits = nullptr) const;
     SPoint3 ringCentroid(int v) const;
     SPoint3 ringApexMean(int v) const;
+    struct ringQuality {
+      double worst = 1., sum = 0.;
+      int below = 0;
+    };
+    ringQuality ringAt(int v, const SPoint3 &at) const;
+    static bool smoothedBetter(const ringQuality &before,
+                               const ringQuality &after, double sumGain)
+    {
+      return after.worst >= before.worst && after.below <= before.below &&
+             after.sum >= before.sum + sumGain;
+    }
+    std::vector<SPoint3> smoothingTargets(int v, const ringQuality &before,
+                                          double sumGain) const;
+    bool holdsInput(int v, const SPoint3 &to,
+                    const std::vector<closestTriangleHit> &held) const;
     double ringLongestEdge(int v) const
     {
       double l = 0.;
@@ -377,12 +392,70 @@ namespace {
     return centroid;
   }
 
-  // v moved to its neighbours' centroid or halfway there, on the input, if
-  // the mean kappa around it rises by `gain`, the worst does not fall, no
-  // triangle falls below the target and none gets farther from the input.
-  // Most nodes of a frontal mesh gain nothing: a position is searched on the
-  // input only if it would be better before the search (the search moves it
-  // by the input's sag, small against the triangles around)
+  // The worst, the sum and the count below the target of the kappas of the
+  // triangles around v with v at `at`
+  optimizer::ringQuality optimizer::ringAt(int v, const SPoint3 &at) const
+  {
+    ringQuality r;
+    for(int t : _around[v]) {
+      SPoint3 c[3];
+      cornersWith(_m.triangles[t], v, at, _m.points, c);
+      const double k = triangleKappa(c[0], c[1], c[2]);
+      r.worst = std::min(r.worst, k);
+      r.sum += k;
+      r.below += k < _o.target;
+    }
+    return r;
+  }
+
+  // Where smoothing may move v, best first: the neighbours' centroid (which
+  // evens the edges), the mean of the points that make each triangle around
+  // equilateral (which evens the angles), and halfway to each, those where
+  // the ring's kappa sum rises by sumGain, its worst does not fall and none
+  // falls below the target
+  std::vector<SPoint3> optimizer::smoothingTargets(int v,
+                                                   const ringQuality &before,
+                                                   double sumGain) const
+  {
+    const SPoint3 here = _m.points[v], centroid = ringCentroid(v),
+                  apex = ringApexMean(v);
+    std::vector<std::pair<double, SPoint3> > better;
+    for(const SPoint3 &to :
+        {apex, centroid, (here + apex) * 0.5, (here + centroid) * 0.5})
+      if(smoothedBetter(before, ringAt(v, to), sumGain))
+        better.push_back(std::make_pair(-ringAt(v, to).sum, to));
+    std::sort(
+      better.begin(), better.end(),
+      [](const std::pair<double, SPoint3> &a,
+         const std::pair<double, SPoint3> &b) { return a.first < b.first; });
+    std::vector<SPoint3> targets;
+    for(const auto &b : better) targets.push_back(b.second);
+    return targets;
+  }
+
+  // Whether the input's points v's ring held stay held with v at `to`:
+  // where v was (a point of the input: a tip) and the points of the input
+  // closest to the ring's centroids (`held`: on a crease under the feature
+  // angle, points of the crease) no farther from the ring than they were,
+  // but for a small share of its size
+  bool optimizer::holdsInput(int v, const SPoint3 &to,
+                             const std::vector<closestTriangleHit> &held) const
+  {
+    const double tolerance = _o.smoothTolerance * ringLongestEdge(v);
+    if(distanceToRing(v, to, _m.points[v]) > tolerance) return false;
+    for(const closestTriangleHit &h : held)
+      if(distanceToRing(v, to, h.point) > h.distance + tolerance) return false;
+    return true;
+  }
+
+  // v moved where smoothingTargets says, on the input (its closest point),
+  // if that is still better there, no triangle of its ring points against
+  // the input nor gets farther from it (as tryMove: beyond a share of its
+  // size, the sag of a larger triangle on a curved input), and the ring
+  // holds the input it held. Most nodes of a frontal mesh gain nothing: a
+  // position is searched on the input only if it would be better before
+  // the search (the search moves it by the input's sag, small against the
+  // triangles around)
   bool optimizer::trySmooth(int v, double gain)
   {
     if(spent()) return false;
@@ -390,70 +463,25 @@ namespace {
     _dirty[v] = false;
     for(int t : _around[v])
       if(_m.against[t]) return false; // tryMove's
-    struct ring {
-      double worst = 1., sum = 0.;
-      int below = 0;
-    };
-    auto ringAt = [&](const SPoint3 &at) {
-      ring r;
-      for(int t : _around[v]) {
-        SPoint3 c[3];
-        cornersWith(_m.triangles[t], v, at, _m.points, c);
-        const double k = triangleKappa(c[0], c[1], c[2]);
-        r.worst = std::min(r.worst, k);
-        r.sum += k;
-        r.below += k < _o.target;
-      }
-      return r;
-    };
     const SPoint3 here = _m.points[v];
-    const ring before = ringAt(here);
+    const ringQuality before = ringAt(v, here);
     const double sumGain = gain * _around[v].size();
-    auto better = [&](const SPoint3 &at) {
-      const ring after = ringAt(at);
-      return after.worst >= before.worst && after.below <= before.below &&
-             after.sum >= before.sum + sumGain;
-    };
-    // the neighbours' centroid evens the edges, the mean of the points that
-    // make each triangle equilateral evens the angles; halfway to each
-    const SPoint3 centroid = ringCentroid(v), apex = ringApexMean(v);
-    std::vector<std::pair<double, SPoint3> > targets;
-    for(const SPoint3 &to :
-        {apex, centroid, (here + apex) * 0.5, (here + centroid) * 0.5})
-      if(better(to)) targets.push_back(std::make_pair(-ringAt(to).sum, to));
-    std::sort(
-      targets.begin(), targets.end(),
-      [](const std::pair<double, SPoint3> &a,
-         const std::pair<double, SPoint3> &b) { return a.first < b.first; });
     double farthestHere = -1.;
     bool valid;
-    // the input's points closest to the ring's centroids: where a crease
-    // under the feature angle runs, those on it
     std::vector<closestTriangleHit> held;
-    for(const auto &target : targets) {
-      const SPoint3 &to = target.second;
+    for(const SPoint3 &to : smoothingTargets(v, before, sumGain)) {
       _searches++;
       const closestTriangleHit hit = _onInput.closest(to);
-      if(hit.triangle < 0 || !better(hit.point)) continue;
-      // no triangle farther from the input (as tryMove: beyond a share of
-      // its size, the sag of a larger triangle on a curved input); none
-      // against the input here
-      if(farthestHere < 0.)
+      if(hit.triangle < 0 ||
+         !smoothedBetter(before, ringAt(v, hit.point), sumGain))
+        continue;
+      if(farthestHere < 0.) // none against the input here
         farthestHere = std::max(
           ringFarthest(v, here, _o.moveTolerance, false, valid, &held), 0.);
       if(ringFarthest(v, hit.point, _o.moveTolerance, true, valid) >
            farthestHere ||
-         !valid)
+         !valid || !holdsInput(v, hit.point, held))
         continue;
-      // nor the input left behind: where v was (a point of the input: a
-      // tip) and the input's points the ring held stay as close to it, but
-      // for a small share of its size
-      const double tolerance = _o.smoothTolerance * ringLongestEdge(v);
-      bool holds = distanceToRing(v, hit.point, here) <= tolerance;
-      for(std::size_t k = 0; k < held.size() && holds; k++)
-        holds = distanceToRing(v, hit.point, held[k].point) <=
-                held[k].distance + tolerance;
-      if(!holds) continue;
       _m.points[v] = hit.point;
       _m.landing[v] = hit.triangle;
       changedAround(v);

@@ -71,6 +71,34 @@ namespace {
     return m;
   }
 
+  // A roof over t: two planes of the given slope meeting at a ridge along
+  // x = 0.5
+  testTriangulation roof(testTriangulation t, double slope)
+  {
+    for(SPoint3 &p : t.points)
+      p = SPoint3(p.x(), p.y(), slope * (0.5 - std::fabs(p.x() - 0.5)));
+    return t;
+  }
+
+  // The largest and the mean distance to a mesh of the input's nodes on
+  // the ridge (x = 0.5) with y in (from, to)
+  double ridgeDistance(const optimizableMesh &mesh, const surfaceMesh &input,
+                       double from, double to, double *mean = nullptr)
+  {
+    const closestTriangleSearch onMesh(mesh.points, mesh.triangles);
+    double largest = 0., sum = 0.;
+    int count = 0;
+    for(const SPoint3 &p : input.points)
+      if(std::fabs(p.x() - 0.5) < 1e-9 && p.y() > from && p.y() < to) {
+        const double d = onMesh.closest(p).distance;
+        largest = std::max(largest, d);
+        sum += d;
+        count++;
+      }
+    if(mean) *mean = count ? sum / count : 0.;
+    return largest;
+  }
+
 } // namespace
 
 TEST(surfaceMeshOptimizer, slivers)
@@ -209,30 +237,14 @@ TEST(surfaceMeshOptimizer, inputNodesTheMeshCutsOffAreInserted)
   // degrees between their normals: a sharp crease the layout merged into a
   // patch); the mesh: a coarse grid whose nodes miss the ridge (7 cells),
   // so its triangles cut across it
-  auto roof = [](testTriangulation t) {
-    for(SPoint3 &p : t.points)
-      p = SPoint3(p.x(), p.y(), 0.8 * (0.5 - std::fabs(p.x() - 0.5)));
-    return t;
-  };
-  const testTriangulation input = roof(rectangleGrid(40, 40, 1., 1.));
+  const testTriangulation input = roof(rectangleGrid(40, 40, 1., 1.), 0.8);
   const surfaceMesh in = asSurfaceMesh(input);
   const closestTriangleSearch onInput(in.points, in.triangles);
-  optimizableMesh m = optimizable(roof(rectangleGrid(7, 7, 1., 1.)));
+  optimizableMesh m = optimizable(roof(rectangleGrid(7, 7, 1., 1.), 0.8));
   const std::size_t nodes = m.points.size();
   // the largest and mean distance of the ridge's input nodes to the mesh
   auto cutOff = [&](const optimizableMesh &mesh, double &mean) {
-    const closestTriangleSearch onMesh(mesh.points, mesh.triangles);
-    double largest = 0., sum = 0.;
-    int count = 0;
-    for(const SPoint3 &p : in.points)
-      if(std::fabs(p.x() - 0.5) < 1e-9 && p.y() > 0.1 && p.y() < 0.9) {
-        const double d = onMesh.closest(p).distance;
-        largest = std::max(largest, d);
-        sum += d;
-        count++;
-      }
-    mean = sum / count;
-    return largest;
+    return ridgeDistance(mesh, in, 0.1, 0.9, &mean);
   };
   double meanBefore, meanAfter;
   const double before = cutOff(m, meanBefore);
@@ -434,12 +446,7 @@ TEST(surfaceMeshOptimizer, smoothingKeepsARidgeTheMeshHolds)
   // ridge nodes' neighbours have their centroid off the ridge. Smoothing may
   // move them there only as far as the ridge stays within 2 % of the
   // triangles' size from the mesh
-  auto roof = [](testTriangulation t) {
-    for(SPoint3 &p : t.points)
-      p = SPoint3(p.x(), p.y(), 0.3 * (0.5 - std::fabs(p.x() - 0.5)));
-    return t;
-  };
-  const testTriangulation input = roof(rectangleGrid(40, 40, 1., 1.));
+  const testTriangulation input = roof(rectangleGrid(40, 40, 1., 1.), 0.3);
   const surfaceMesh in = asSurfaceMesh(input);
   const closestTriangleSearch onInput(in.points, in.triangles);
   testTriangulation grid = rectangleGrid(10, 10, 1., 1.);
@@ -451,16 +458,10 @@ TEST(surfaceMeshOptimizer, smoothingKeepsARidgeTheMeshHolds)
       held.push_back((int)i);
     }
   }
-  optimizableMesh start = optimizable(roof(grid));
+  optimizableMesh start = optimizable(roof(grid, 0.3));
   for(int i : held) start.movable[i] = false;
-  // the largest distance of the ridge's input nodes to a mesh
   auto ridgeCut = [&](const optimizableMesh &mesh) {
-    const closestTriangleSearch onMesh(mesh.points, mesh.triangles);
-    double largest = 0.;
-    for(const SPoint3 &p : in.points)
-      if(std::fabs(p.x() - 0.5) < 1e-9 && p.y() > 0.15 && p.y() < 0.85)
-        largest = std::max(largest, onMesh.closest(p).distance);
-    return largest;
+    return ridgeDistance(mesh, in, 0.15, 0.85);
   };
   ASSERT_LT(ridgeCut(start), 1e-12);
   meshOptimizationOptions o;
