@@ -112,8 +112,9 @@ namespace {
   // the input: the planar mesher did not fill it (a hole's wall of needle
   // triangles as tall as four sizes, whose (u, v) image squeezes its height:
   // Frontal-Delaunay found no point to insert, and left 16 triangles across
-  // the wall, kappa min 0.17; MeshAdapt fills it). The other planar mesher,
-  // then MeshAdapt, each kept if it does better (logged)
+  // the wall, kappa min 0.17). MeshAdapt, which refines by edge splits
+  // instead of points placed in (u, v), kept if it does better (logged);
+  // Delaunay tried first filled none of featuretype's 8 walls
   void fillWithAnotherMesher(GFace *gf)
   {
     meshDefects defects;
@@ -122,11 +123,6 @@ namespace {
     Msg::Info("Reparam: surface %d: the planar mesh leaves %lu edges longer "
               "than twice the size",
               gf->tag(), defects.longEdges);
-    if(reparamTryOtherMesher(gf, defects)) {
-      defects.againstInput = countTrianglesAgainstInput(gf);
-      defects.longEdges = countLongEdges(gf);
-      if(defects.againstInput || !defects.longEdges) return;
-    }
     reparamTryOtherMesher(gf, defects, ALGO_2D_MESHADAPT);
   }
 

@@ -27,8 +27,7 @@ std::size_t countElementsAgainstFaceNormals(GFace *gf);
 // the other planar mesher (Geo/reparamMesherFallback.h), then the input's
 // own triangles (Geo/reparamInputMesh.h); true if at most 1 % of the
 // elements fail Gmsh's test: the mesh is kept (logged). A mesh with edges
-// longer than twice the size (countLongEdges) is compared with the other
-// planar mesher's, then MeshAdapt's
+// longer than twice the size (countLongEdges) is compared with MeshAdapt's
 bool reparamKeepPlanarMesh(GFace *gf);
 
 // The segments of gf's curves its triangles use fewer times than the curve

@@ -44,6 +44,8 @@ namespace {
       _m.inputNode.resize(m.points.size(), -1);
       _m.movable.resize(m.points.size(), false);
       _dirty.assign(m.points.size(), true);
+      _atCentroid.resize(m.triangles.size());
+      _known.assign(m.triangles.size(), false);
     }
 
     double kappa(int t) const
@@ -92,8 +94,25 @@ namespace {
     const std::size_t _budget;
     void changedAround(int v)
     {
-      for(int t : _around[v])
+      for(int t : _around[v]) {
+        _known[t] = false;
         for(int w : _m.triangles[t]) _dirty[w] = true;
+      }
+    }
+    // the input's point closest to triangle t's centroid, kept until a
+    // corner of t moves (a smoothing sweep asks for most of them twice)
+    mutable std::vector<closestTriangleHit> _atCentroid;
+    mutable std::vector<bool> _known;
+    const closestTriangleHit &centroidHit(int t) const
+    {
+      if(!_known[t]) {
+        const std::array<int, 3> &c = _m.triangles[t];
+        _searches++;
+        _atCentroid[t] = _onInput.closest(
+          centroidOf(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]));
+        _known[t] = true;
+      }
+      return _atCentroid[t];
     }
 
     bool against(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c) const
@@ -211,6 +230,7 @@ namespace {
     if(far > wasFar + _o.tolerance * x[p].distance(x[q])) return false;
     replaceCorner(t, b, q); // (a, b, p) -> (a, q, p)
     replaceCorner(s, a, p); // (b, a, q) -> (b, p, q) = (q, b, p)
+    _known[t] = _known[s] = false;
     _m.against[t] = _m.against[s] = false;
     for(int v : {a, b, p, q}) _dirty[v] = true;
     return true;
@@ -475,16 +495,31 @@ namespace {
       if(hit.triangle < 0 ||
          !smoothedBetter(before, ringAt(v, hit.point), sumGain))
         continue;
-      if(farthestHere < 0.) // none against the input here
-        farthestHere = std::max(
-          ringFarthest(v, here, _o.moveTolerance, false, valid, &held), 0.);
-      if(ringFarthest(v, hit.point, _o.moveTolerance, true, valid) >
+      if(farthestHere < 0.) { // none against the input here
+        farthestHere = 0.;
+        held.clear();
+        for(int t : _around[v]) {
+          const std::array<int, 3> &c = _m.triangles[t];
+          held.push_back(centroidHit(t));
+          farthestHere = std::max(
+            farthestHere,
+            held.back().distance -
+              _o.moveTolerance *
+                longestEdge(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]));
+        }
+      }
+      std::vector<closestTriangleHit> hits;
+      if(ringFarthest(v, hit.point, _o.moveTolerance, true, valid, &hits) >
            farthestHere ||
          !valid || !holdsInput(v, hit.point, held))
         continue;
       _m.points[v] = hit.point;
       _m.landing[v] = hit.triangle;
       changedAround(v);
+      for(std::size_t k = 0; k < hits.size(); k++) {
+        _atCentroid[_around[v][k]] = hits[k];
+        _known[_around[v][k]] = true;
+      }
       return true;
     }
     return false;
