@@ -43,6 +43,10 @@ public:
 
   // triangle -1 if the surface has no triangle
   closestTriangleHit closest(const SPoint3 &p) const;
+  // the same, started from triangle `near` (-1: none), a guess of the
+  // closest one (where a neighbouring point landed): its distance bounds
+  // the search from the start, so that fewer boxes are opened
+  closestTriangleHit closest(const SPoint3 &p, int near) const;
   // the boxes of the tree
   std::size_t numBoxes() const;
 

@@ -70,7 +70,7 @@ namespace {
     SVector3 sum = unitNormal(atCentroid.triangle);
     for(int j : e) {
       SPoint3 half = (g + m.points[j]) * 0.5;
-      sum += unitNormal(onInput.closest(half).triangle);
+      sum += unitNormal(onInput.closest(half, atCentroid.triangle).triangle);
     }
     return dot(normal, sum) < 0.;
   }
@@ -98,10 +98,18 @@ namespace {
                      std::size_t *inverted = nullptr)
   {
     oneSided s;
-    for(const SPoint3 &p : from.points) s.add(search.closest(p).distance, p);
+    // each search starts from the triangle the one before found: meshes
+    // number their nodes and elements by neighbourhoods
+    int last = -1;
+    for(const SPoint3 &p : from.points) {
+      const closestTriangleHit hit = search.closest(p, last);
+      s.add(hit.distance, p);
+      last = hit.triangle;
+    }
     for(const auto &t : from.triangles) {
       const SPoint3 g = centroid<3>(from, t);
-      closestTriangleHit hit = search.closest(g);
+      closestTriangleHit hit = search.closest(g, last);
+      last = hit.triangle;
       s.add(hit.distance, g);
       if(inverted)
         *inverted +=
@@ -109,7 +117,8 @@ namespace {
     }
     for(const auto &q : from.quadrangles) {
       const SPoint3 g = centroid<4>(from, q);
-      closestTriangleHit hit = search.closest(g);
+      closestTriangleHit hit = search.closest(g, last);
+      last = hit.triangle;
       s.add(hit.distance, g);
       if(inverted)
         *inverted +=

@@ -108,8 +108,10 @@ namespace {
       if(!_known[t]) {
         const std::array<int, 3> &c = _m.triangles[t];
         _searches++;
+        int near = -1;
+        for(int k = 0; k < 3 && near < 0; k++) near = _m.landing[c[k]];
         _atCentroid[t] = _onInput.closest(
-          centroidOf(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]));
+          centroidOf(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]), near);
         _known[t] = true;
       }
       return _atCentroid[t];
@@ -339,8 +341,9 @@ namespace {
       SPoint3 c[3];
       cornersWith(_m.triangles[t], v, at, _m.points, c);
       _searches++;
-      const closestTriangleHit hit =
-        _onInput.closest(centroidOf(c[0], c[1], c[2]));
+      // the centroid moved a little: start from where it was
+      const closestTriangleHit hit = _onInput.closest(
+        centroidOf(c[0], c[1], c[2]), _known[t] ? _atCentroid[t].triangle : -1);
       if(hits) hits->push_back(hit);
       if(checkAgainst) {
         _searches += 3;
@@ -491,7 +494,11 @@ namespace {
     std::vector<closestTriangleHit> held;
     for(const SPoint3 &to : smoothingTargets(v, before, sumGain)) {
       _searches++;
-      const closestTriangleHit hit = _onInput.closest(to);
+      const int t0 = _around[v][0];
+      const closestTriangleHit hit =
+        _onInput.closest(to, _m.landing[v] >= 0 ? _m.landing[v] :
+                             _known[t0]         ? _atCentroid[t0].triangle :
+                                                  -1);
       if(hit.triangle < 0 ||
          !smoothedBetter(before, ringAt(v, hit.point), sumGain))
         continue;

@@ -76,6 +76,12 @@ TEST(closestTriangle, searchEqualsBruteForce)
     ASSERT_GE(hit.triangle, 0);
     EXPECT_NEAR(hit.distance, bruteForceDistance(t, p), 1e-13) << i;
     EXPECT_NEAR(hit.point.distance(p), hit.distance, 1e-13);
+    // started from any triangle (a guess, near or far): the same distance
+    const int near = (int)(s.next() * t.triangles.size());
+    closestTriangleHit guessed = search.closest(p, near);
+    EXPECT_NEAR(guessed.distance, hit.distance, 1e-13) << i;
+    EXPECT_NEAR(guessed.point.distance(p), guessed.distance, 1e-13);
+    EXPECT_EQ(search.closest(p, -1).triangle, hit.triangle);
   }
 }
 
@@ -131,8 +137,8 @@ TEST(meshFidelity, wholeModelDistancesIgnoreWhereFacesMeet)
   testTriangulation grid = rectangleGrid(10, 10, 1., 1.);
   testTriangulation input[2], output[2];
   for(const auto &t : grid.triangles) {
-    SPoint3 c = (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) *
-                (1. / 3.);
+    SPoint3 c =
+      (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) * (1. / 3.);
     // zig-zag: the column of cells right of x = 0.5 goes left on odd rows
     const int row = (int)(c.y() * 10.);
     const double cut = row % 2 ? 0.6 : 0.5;
@@ -150,7 +156,8 @@ TEST(meshFidelity, wholeModelDistancesIgnoreWhereFacesMeet)
   for(int f = 0; f < 2; f++)
     faceByFace = std::max(faceByFace, compareToInput(in[f], out[f]).hausdorff);
   EXPECT_NEAR(faceByFace, 0.1, 1e-12);
-  meshFidelity whole = compareDistancesToInput({in[0], in[1]}, {out[0], out[1]});
+  meshFidelity whole =
+    compareDistancesToInput({in[0], in[1]}, {out[0], out[1]});
   EXPECT_NEAR(whole.hausdorff, 0., 1e-14);
   EXPECT_NEAR(whole.diagonal, std::sqrt(2.), 1e-14);
   EXPECT_EQ(whole.elements, grid.triangles.size());
