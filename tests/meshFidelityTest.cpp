@@ -85,6 +85,34 @@ TEST(closestTriangle, searchEqualsBruteForce)
   }
 }
 
+TEST(meshFidelity, againstTheInputGivenTheCentroidsClosestPoint)
+{
+  // the test with the input's closest point to the centroid given (a
+  // caller measuring distances has it) answers as the one that searches it
+  const surfaceMesh input = asSurfaceMesh(hemisphere(8, 24));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  sequence s{3};
+  std::size_t against = 0;
+  for(int i = 0; i < 400; i++) {
+    SPoint3 c[3];
+    for(SPoint3 &p : c)
+      p = onInput
+            .closest(
+              SPoint3(2 * s.next() - 1, 2 * s.next() - 1, 2 * s.next() - 1))
+            .point;
+    const bool searched =
+      triangleAgainstInput(c[0], c[1], c[2], input, onInput);
+    const closestTriangleHit hit =
+      onInput.closest((c[0] + c[1] + c[2]) * (1. / 3.));
+    EXPECT_EQ(triangleAgainstInput(c[0], c[1], c[2], input, onInput, hit),
+              searched)
+      << i;
+    against += searched;
+  }
+  EXPECT_GT(against, 50u); // both answers met
+  EXPECT_LT(against, 350u);
+}
+
 TEST(meshFidelity, sameMeshIsFaithfulAndReversedIsInverted)
 {
   surfaceMesh input = asSurfaceMesh(hemisphere(8, 24));

@@ -96,6 +96,9 @@ TEST(reparamSizeGrading, theFaceSizesGrowAwayFromAShortCurve)
   // 0.1 above its middle node
   EXPECT_NEAR(size(0.01, 0.1), 0.01 + 0.5 * 0.1, 1e-9);
   EXPECT_NEAR(size(0.5, 0.5), 0.1, 1e-12);
+  // the size without the grading, for the checks of the mesh made: 0.1
+  EXPECT_NEAR(reparamUngradedMeshSize(gf, SPoint3(0.01, 0.1, 0.)), 0.1, 1e-12);
+  EXPECT_NEAR(size(0.01, 0.1), 0.01 + 0.5 * 0.1, 1e-9); // graded again
   // other entities keep theirs
   GEdge *ge = GModel::current()->getEdgeByTag(2);
   EXPECT_NEAR(BGM_MeshSize(ge, 0., 0., 0.01, 0., 0.), 0.1, 1e-12);
