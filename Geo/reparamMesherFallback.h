@@ -9,6 +9,8 @@
 // Frontal-Delaunay, 2 with MeshAdapt, 0 with Delaunay. Where Gmsh would
 // still remesh with MeshAdapt, its mesh is compared too, not taken blindly
 // (a face of a noisy camelhead: 2 against the input, 8 with MeshAdapt).
+// A face the planar mesher left nearly empty (edges longer than twice the
+// size) is compared with MeshAdapt's mesh (Geo/reparamMeshValidity.h).
 
 #ifndef REPARAM_MESHER_FALLBACK_H
 #define REPARAM_MESHER_FALLBACK_H

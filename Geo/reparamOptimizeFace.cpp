@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <set>
+#include "GEdge.h"
 #include "GFace.h"
 #include "GmshMessage.h"
 #include "MTriangle.h"
 #include "MVertex.h"
-#include "GEdge.h"
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"

@@ -8,12 +8,12 @@
 #include "Context.h"
 #include "GFace.h"
 #include "GModel.h"
-#include "SVector3.h"
 #include "GVertex.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
 #include "MLine.h"
 #include "MVertex.h"
+#include "closestTriangle.h"
 #include "gradedBoundarySize.h"
 #include "reparamCurveMesh.h"
 #include "reparamOptions.h"
@@ -97,20 +97,15 @@ namespace {
     return true;
   }
 
-  // The distance of p to a polyline
+  // The distance of p to a polyline (-1 if it has no segment)
   double distanceToPolyline(const SPoint3 &p,
                             const std::vector<SPoint3> &polyline)
   {
     double nearest = -1.;
     for(std::size_t i = 0; i + 1 < polyline.size(); i++) {
-      const SVector3 d(polyline[i], polyline[i + 1]), w(polyline[i], p);
-      const double l2 = dot(d, d);
-      const double t =
-        l2 > 0. ? std::max(0., std::min(1., dot(w, d) / l2)) : 0.;
-      const SPoint3 q(polyline[i].x() + t * d.x(), polyline[i].y() + t * d.y(),
-                      polyline[i].z() + t * d.z());
-      const double dist = p.distance(q);
-      if(nearest < 0. || dist < nearest) nearest = dist;
+      const double d =
+        p.distance(closestPointOnSegment(p, polyline[i], polyline[i + 1]));
+      if(nearest < 0. || d < nearest) nearest = d;
     }
     return nearest;
   }
@@ -127,16 +122,23 @@ namespace {
   {
     for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
       GFace *gf = *it;
-      if(gf->geomType() != GEntity::DiscreteSurface) continue;
+      if(gf->geomType() != GEntity::DiscreteSurface ||
+         gf->embeddedVertices().empty())
+        continue;
+      // the face's curves' input polylines, once for all its points
+      std::vector<GEdge *> edges = gf->edges();
+      for(GEdge *ge : gf->embeddedEdges()) edges.push_back(ge);
+      std::vector<std::vector<SPoint3> > polylines;
+      for(GEdge *ge : edges) {
+        std::vector<SPoint3> polyline;
+        if(reparamInputPolyline(ge, polyline))
+          polylines.push_back(std::move(polyline));
+      }
       for(GVertex *gv : gf->embeddedVertices()) {
         const SPoint3 p(gv->x(), gv->y(), gv->z());
         const double size = BGM_MeshSize(gv, 0., 0., p.x(), p.y(), p.z());
         double nearest = -1.;
-        std::vector<GEdge *> edges = gf->edges();
-        for(GEdge *ge : gf->embeddedEdges()) edges.push_back(ge);
-        for(GEdge *ge : edges) {
-          std::vector<SPoint3> polyline;
-          if(!reparamInputPolyline(ge, polyline)) continue;
+        for(const std::vector<SPoint3> &polyline : polylines) {
           const double d = distanceToPolyline(p, polyline);
           if(d >= 0. && (nearest < 0. || d < nearest)) nearest = d;
         }

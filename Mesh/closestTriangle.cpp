@@ -5,19 +5,15 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 
-namespace {
-
-  SPoint3 closestPointOnSegment(const SPoint3 &p, const SPoint3 &a,
-                                const SPoint3 &b)
-  {
-    SVector3 ab(a, b);
-    double l2 = dot(ab, ab);
-    if(l2 == 0.) return a;
-    double t = std::clamp(dot(SVector3(a, p), ab) / l2, 0., 1.);
-    return SPoint3(a.x() + t * ab.x(), a.y() + t * ab.y(), a.z() + t * ab.z());
-  }
-
-} // namespace
+SPoint3 closestPointOnSegment(const SPoint3 &p, const SPoint3 &a,
+                              const SPoint3 &b)
+{
+  SVector3 ab(a, b);
+  double l2 = dot(ab, ab);
+  if(l2 == 0.) return a;
+  double t = std::clamp(dot(SVector3(a, p), ab) / l2, 0., 1.);
+  return SPoint3(a.x() + t * ab.x(), a.y() + t * ab.y(), a.z() + t * ab.z());
+}
 
 SPoint3 closestPointOnTriangle(const SPoint3 &p, const SPoint3 &a,
                                const SPoint3 &b, const SPoint3 &c)

@@ -12,6 +12,10 @@
 #include <vector>
 #include "SPoint3.h"
 
+// Closest point of segment [a, b] to p (a if the segment is a point)
+SPoint3 closestPointOnSegment(const SPoint3 &p, const SPoint3 &a,
+                              const SPoint3 &b);
+
 // Closest point of triangle (a, b, c) to p, by the region of p among the
 // triangle's vertices, edges and face. Unlike Gmsh's
 // signedDistancePointTriangle, also defined for degenerate triangles (STL

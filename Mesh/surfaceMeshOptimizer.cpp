@@ -444,9 +444,11 @@ namespace {
                   apex = ringApexMean(v);
     std::vector<std::pair<double, SPoint3> > better;
     for(const SPoint3 &to :
-        {apex, centroid, (here + apex) * 0.5, (here + centroid) * 0.5})
-      if(smoothedBetter(before, ringAt(v, to), sumGain))
-        better.push_back(std::make_pair(-ringAt(v, to).sum, to));
+        {apex, centroid, (here + apex) * 0.5, (here + centroid) * 0.5}) {
+      const ringQuality after = ringAt(v, to);
+      if(smoothedBetter(before, after, sumGain))
+        better.push_back(std::make_pair(-after.sum, to));
+    }
     std::sort(
       better.begin(), better.end(),
       [](const std::pair<double, SPoint3> &a,
@@ -684,8 +686,7 @@ namespace {
     }
   }
 
-  // Every movable node moved where its ring's mean kappa rises and its worst
-  // does not fall, sweep after sweep
+  // Sweeps of trySmooth over every movable node, until one moves none
   void smoothMesh(optimizableMesh &m, const surfaceMesh &input,
                   const closestTriangleSearch &onInput,
                   const meshOptimizationOptions &o, meshOptimizationResult &r)

@@ -51,6 +51,13 @@ TEST(closestTriangle, pointOnTriangleByRegion)
   EXPECT_NEAR(q.distance(SPoint3(3, 0, 0)), 0., 1e-15);
   q = closestPointOnTriangle(SPoint3(5, 0, 1), a, a, SPoint3(4, 0, 0));
   EXPECT_NEAR(q.distance(SPoint3(4, 0, 0)), 0., 1e-15);
+  // a segment: its inner point, an end, and a point segment
+  q = closestPointOnSegment(SPoint3(1, 3, 0), a, b);
+  EXPECT_NEAR(q.distance(SPoint3(1, 0, 0)), 0., 1e-15);
+  q = closestPointOnSegment(SPoint3(-2, 1, 0), a, b);
+  EXPECT_NEAR(q.distance(a), 0., 1e-15);
+  q = closestPointOnSegment(SPoint3(3, 3, 3), b, b);
+  EXPECT_NEAR(q.distance(b), 0., 1e-15);
 }
 
 TEST(closestTriangle, searchEqualsBruteForce)
