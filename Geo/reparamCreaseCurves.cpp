@@ -3,6 +3,8 @@
 #include <array>
 #include <map>
 #include <set>
+#include <string>
+#include "BackgroundMeshTools.h"
 #include "Context.h"
 #include "GFace.h"
 #include "GModel.h"
@@ -14,6 +16,7 @@
 #include "discreteEdge.h"
 #include "discreteVertex.h"
 #include "reparamConePoints.h"
+#include "reparamCurveMesh.h"
 #include "reparamCreaseCurves.h"
 
 namespace {
@@ -83,6 +86,38 @@ namespace {
     return true;
   }
 
+  // Whether crease ge is shorter than twice the mesh size at its middle: at
+  // most two segments, whose ends are corners inside the face
+  bool tooShortForTheMesh(GEdge *ge)
+  {
+    std::vector<SPoint3> polyline;
+    if(!reparamInputPolyline(ge, polyline) || polyline.size() < 2) return false;
+    double length = 0.;
+    for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+      length += polyline[i].distance(polyline[i + 1]);
+    const SPoint3 &middle = polyline[polyline.size() / 2];
+    return length <
+           2. * BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+  }
+
+  // The crease curves taken out of their faces for their size, by model
+  std::map<const GModel *, std::set<GEdge *> > &smallCreases()
+  {
+    static std::map<const GModel *, std::set<GEdge *> > curves;
+    return curves;
+  }
+
+  // Whether gv is embedded in a face of m or ends a curve still in use
+  bool pointInUse(GModel *m, GVertex *gv)
+  {
+    for(GEdge *ge : gv->edges())
+      if(!reparamCreaseCurveHidden(ge)) return true;
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it)
+      for(GVertex *v : (*it)->embeddedVertices())
+        if(v == gv) return true;
+    return false;
+  }
+
 } // namespace
 
 int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
@@ -115,6 +150,54 @@ int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
   return added;
 }
 
+int reparamHideSmallCreaseCurves(GModel *m)
+{
+  auto found = creaseCurves().find(m);
+  if(found == creaseCurves().end()) return 0;
+  std::set<GEdge *> &small = smallCreases()[m];
+  std::set<int> faces;
+  for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+    GFace *gf = *it;
+    std::vector<GEdge *> &embedded = gf->embeddedEdges();
+    std::vector<GEdge *> kept, hidden;
+    for(GEdge *ge : embedded)
+      (found->second.count(ge) && tooShortForTheMesh(ge) ? hidden : kept)
+        .push_back(ge);
+    if(hidden.empty()) continue;
+    embedded.swap(kept);
+    std::vector<GEdge *> &out = hiddenCurves()[gf];
+    out.insert(out.end(), hidden.begin(), hidden.end());
+    small.insert(hidden.begin(), hidden.end());
+    faces.insert(gf->tag());
+  }
+  if(small.empty()) return 0;
+  std::string tags;
+  for(int tag : faces) tags += (tags.empty() ? "" : ", ") + std::to_string(tag);
+  Msg::Info("Reparam: %lu crease curve%s shorter than twice the mesh size "
+            "not kept (surface%s %s)",
+            small.size(), small.size() > 1 ? "s" : "",
+            faces.size() > 1 ? "s" : "", tags.c_str());
+  return (int)small.size();
+}
+
+void reparamDeleteHiddenCreaseMeshes(GModel *m)
+{
+  auto found = smallCreases().find(m);
+  if(found == smallCreases().end()) return;
+  for(GEdge *ge : found->second) {
+    ge->deleteMesh();
+    for(GVertex *gv : {ge->getBeginVertex(), ge->getEndVertex()})
+      if(gv && !pointInUse(m, gv)) gv->deleteMesh();
+  }
+}
+
+bool reparamCreaseCurveHidden(const GEdge *ge)
+{
+  auto found = smallCreases().find(ge->model());
+  return found != smallCreases().end() &&
+         found->second.count(const_cast<GEdge *>(ge));
+}
+
 void reparamHideCreaseCurvesFromQuads(GFace *gf)
 {
   if(!CTX::instance()->mesh.recombineAll && !gf->meshAttributes.recombine)
@@ -126,7 +209,8 @@ void reparamHideCreaseCurvesFromQuads(GFace *gf)
   if(hidden.empty()) return;
   embedded.swap(kept);
   for(GEdge *ge : hidden) ge->deleteMesh();
-  hiddenCurves()[gf] = hidden;
+  std::vector<GEdge *> &out = hiddenCurves()[gf];
+  out.insert(out.end(), hidden.begin(), hidden.end());
   Msg::Info("Reparam: surface %d: %lu crease curve%s not kept, for its "
             "quadrangles",
             gf->tag(), hidden.size(), hidden.size() > 1 ? "s" : "");
@@ -136,6 +220,10 @@ void reparamRestoreCreaseCurves(GFace *gf)
 {
   auto it = hiddenCurves().find(gf);
   if(it == hiddenCurves().end()) return;
-  for(GEdge *ge : it->second) gf->addEmbeddedEdge(ge);
+  auto small = smallCreases().find(gf->model());
+  for(GEdge *ge : it->second) {
+    gf->addEmbeddedEdge(ge);
+    if(small != smallCreases().end()) small->second.erase(ge);
+  }
   hiddenCurves().erase(it);
 }

@@ -15,6 +15,7 @@
 #include "MVertex.h"
 #include "closestTriangle.h"
 #include "gradedBoundarySize.h"
+#include "reparamCreaseCurves.h"
 #include "reparamCurveMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
@@ -172,7 +173,9 @@ namespace {
       GEdge *ge = *it;
       std::vector<SPoint3> polyline;
       double length, size;
-      if(!measureCurve(ge, polyline, length, size)) continue;
+      if(reparamCreaseCurveHidden(ge) ||
+         !measureCurve(ge, polyline, length, size))
+        continue;
       if(length / size > mostSegments) {
         Msg::Error("Reparam: curve %d would get %.3g segments (length %g, "
                    "mesh size %g): not meshed. Set Mesh.MeshSizeMax (or "
@@ -201,6 +204,7 @@ void reparamBeginCurveSizeGrading(GModel *m)
 {
   if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return;
+  reparamHideSmallCreaseCurves(m);
   const double gradient = getReparamOptions().meshSizeGradient;
   std::unique_ptr<gradedBoundarySize> size = measureCurves(m, gradient);
   if(gradient <= 0. || !size->size()) return;
@@ -212,6 +216,7 @@ void reparamBeginCurveSizeGrading(GModel *m)
 
 void reparamEndCurveSizeGrading(GModel *m)
 {
+  reparamDeleteHiddenCreaseMeshes(m);
   for(const auto &r : refusedCurves)
     if(r.first->model() == m) r.first->meshAttributes.method = r.second;
   refusedCurves.clear();

@@ -48,11 +48,12 @@ TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
   // z = max(0, y - 0.3) |x - 0.5| over a 20 x 20 grid of the unit square:
   // a crease along x = 0.5, sharp (> 40 degrees) for y above 0.6, that ends
   // inside the face: it bounds no patch, and the mesh follows it anyway
+  // (at a size under half its length: creaseShorterThanTwice... below)
   testTriangulation t = rectangleGrid(20, 20, 1., 1.);
   for(auto &p : t.points)
     p = SPoint3(p.x(), p.y(),
                 1.2 * std::max(0., p.y() - 0.3) * std::fabs(p.x() - 0.5));
-  std::vector<std::string> log = remeshWithRecipe(t, 0.15);
+  std::vector<std::string> log = remeshWithRecipe(t, 0.1);
   int embedded = 0;
   for(const auto &l : log) {
     EXPECT_EQ(l.find("Error"), std::string::npos) << l;
@@ -82,4 +83,73 @@ TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
     onCrease += std::fabs(coords[i] - 0.5) < 1e-12 && coords[i + 1] > 0.6 &&
                 coords[i + 1] < 0.99;
   EXPECT_GE(onCrease, 3);
+}
+
+namespace {
+
+  // The square z = 1.2 max(0, y - 0.05) |x - 0.5| over a 30 x 30 grid
+  // (sharp, > 40 degrees, for y above 0.35: a crease along x = 0.5 from
+  // there on, ending inside), rolled into an annulus' sector (radius 0.2 +
+  // 0.6 x, angle 1.5 pi y): the crease is an arc of radius 0.5 and 1.53
+  // long whose ends are 1 apart
+  testTriangulation bentCrease()
+  {
+    testTriangulation t = rectangleGrid(30, 30, 1., 1.);
+    for(auto &p : t.points) {
+      const double r = 0.2 + 0.6 * p.x(), a = 1.5 * M_PI * p.y();
+      const double z = 1.2 * std::max(0., p.y() - 0.05) * std::fabs(r - 0.5);
+      p = SPoint3(r * std::cos(a), r * std::sin(a), z);
+    }
+    return t;
+  }
+
+  // Whether the log says crease curves were not kept for the mesh size
+  bool creaseNotKept(const std::vector<std::string> &log)
+  {
+    for(const auto &l : log)
+      if(l.find("shorter than twice the mesh size not kept") !=
+         std::string::npos)
+        return true;
+    return false;
+  }
+
+  // The mesh nodes no triangle uses
+  std::size_t nodesOutsideTriangles()
+  {
+    std::vector<std::size_t> tags, used;
+    std::vector<double> coords, params;
+    gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false, false);
+    std::vector<std::size_t> elements;
+    gmsh::model::mesh::getElementsByType(2, elements, used);
+    std::set<std::size_t> inTriangles(used.begin(), used.end());
+    std::size_t outside = 0;
+    for(std::size_t t : tags) outside += !inTriangles.count(t);
+    return outside;
+  }
+
+} // namespace
+
+TEST(creaseChains, creaseShorterThanTwiceTheMeshSizeIsNotKept)
+{
+  // at the size 0.8 the crease would get two segments cutting its bend,
+  // with corners inside the face at their ends: not kept, and no node
+  // of it left outside the triangles; at 0.1 it is kept
+  std::vector<std::string> log = remeshWithRecipe(bentCrease(), 0.8);
+  for(const auto &l : log) EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+  EXPECT_TRUE(creaseNotKept(log));
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  std::size_t nonManifold = 0;
+  const std::size_t free = freeMeshEdges(&nonManifold).size();
+  EXPECT_EQ(nonManifold, 0u);
+  EXPECT_GE(free, 4u); // the sector's sides only, at about 0.8
+  EXPECT_LT(free, 20u);
+  EXPECT_EQ(nodesOutsideTriangles(), 0u);
+
+  log = remeshWithRecipe(bentCrease(), 0.1);
+  EXPECT_FALSE(creaseNotKept(log));
+  int embedded = 0;
+  for(const auto &l : log)
+    embedded += l.find("kept as embedded curve") != std::string::npos;
+  EXPECT_EQ(embedded, 1);
+  EXPECT_EQ(nodesOutsideTriangles(), 0u);
 }
