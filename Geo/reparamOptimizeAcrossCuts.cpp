@@ -20,6 +20,7 @@
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamSlideCurveNodes.h"
 
 namespace {
 
@@ -445,5 +446,7 @@ int reparamOptimizeMeshedModel(GModel *m)
   int changed = 0;
   for(const cutGroup &g : facesJoinedByCuts(m))
     if(!alreadyOptimized(g)) changed += optimizeGroup(g);
+  // then the nodes of the curves no optimizer moved
+  if(reparamSlideCurveNodes(m)) changed++;
   return changed;
 }

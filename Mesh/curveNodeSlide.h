@@ -1,0 +1,49 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// A node of a curve's 1D mesh slid along the curve's input polyline. The
+// optimization on the input moves inner nodes only: the nodes of the
+// feature curves and borders stay where the 1D mesher put them, and most
+// triangles below kappa 0.3 on the shared meshes have a node on a curve
+// (a short segment next to a long one, a corner's fan). Sliding such a node
+// between its two neighbours along the curve keeps the curve where it is
+// and can lift the worst triangle around it.
+
+#ifndef CURVE_NODE_SLIDE_H
+#define CURVE_NODE_SLIDE_H
+
+#include <array>
+#include <vector>
+#include "SPoint3.h"
+
+struct curveNodeRing {
+  // the curve's input polyline (node i at parameter i)
+  std::vector<SPoint3> polyline;
+  // the node's parameter and its neighbours' along the curve
+  double t = 0., before = 0., after = 0.;
+  // the triangles around the node, as their two other corners in the
+  // triangle's order (node, a, b)
+  std::vector<std::array<SPoint3, 2> > opposite;
+};
+
+struct curveNodeSlide {
+  double t = 0.; // the new parameter (the old one if no slide is better)
+  double worstBefore = 1., worstAfter = 1.; // kappa of the ring
+};
+
+// The parameter strictly between the neighbours' where the worst kappa of
+// the ring is highest, among an eighth of the way between them steps and
+// the polyline's nodes there: taken if it beats the worst kappa now by
+// `gain`, the ring's kappa summed falls by no more than its worst gains
+// unless that is below 0.3 (adis16480's kappa mean 0.894 -> 0.891 without
+// that; not falling at all: gmsh2x_car_body's worst 0.27 -> 0.15), no
+// triangle's normal turns by more than `maxTurn` (radians; 0:
+// none turns over), and the polyline between the node and each neighbour
+// stays within `sag` times the segment's length of it (or no farther than
+// it was: a node on a corner of the polyline stays there)
+curveNodeSlide slideCurveNode(const curveNodeRing &ring, double gain = 1e-3,
+                              double maxTurn = 0.5, double sag = 0.05);
+
+// The point of the polyline at parameter t (node i at i)
+SPoint3 pointOnPolyline(const std::vector<SPoint3> &polyline, double t);
+
+#endif
