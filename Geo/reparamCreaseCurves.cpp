@@ -86,9 +86,11 @@ namespace {
     return true;
   }
 
-  // Whether crease ge is shorter than twice the mesh size at its middle: at
-  // most two segments, whose ends are corners inside the face
-  bool tooShortForTheMesh(GEdge *ge)
+  // Whether crease ge is shorter than twice the mesh size at its middle (at
+  // most two segments) and bent: its ends closer than 0.8 of its length.
+  // Two segments cannot follow it, and their ends are corners inside the
+  // face; a straight short crease is meshed along as well as a long one
+  bool tooBentForTheMesh(GEdge *ge)
   {
     std::vector<SPoint3> polyline;
     if(!reparamInputPolyline(ge, polyline) || polyline.size() < 2) return false;
@@ -96,8 +98,10 @@ namespace {
     for(std::size_t i = 0; i + 1 < polyline.size(); i++)
       length += polyline[i].distance(polyline[i + 1]);
     const SPoint3 &middle = polyline[polyline.size() / 2];
-    return length <
-           2. * BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+    const double size =
+      BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
+    return length < 2. * size &&
+           polyline.front().distance(polyline.back()) < 0.8 * length;
   }
 
   // The crease curves taken out of their faces for their size, by model
@@ -161,7 +165,7 @@ int reparamHideSmallCreaseCurves(GModel *m)
     std::vector<GEdge *> &embedded = gf->embeddedEdges();
     std::vector<GEdge *> kept, hidden;
     for(GEdge *ge : embedded)
-      (found->second.count(ge) && tooShortForTheMesh(ge) ? hidden : kept)
+      (found->second.count(ge) && tooBentForTheMesh(ge) ? hidden : kept)
         .push_back(ge);
     if(hidden.empty()) continue;
     embedded.swap(kept);
@@ -173,8 +177,8 @@ int reparamHideSmallCreaseCurves(GModel *m)
   if(small.empty()) return 0;
   std::string tags;
   for(int tag : faces) tags += (tags.empty() ? "" : ", ") + std::to_string(tag);
-  Msg::Info("Reparam: %lu crease curve%s shorter than twice the mesh size "
-            "not kept (surface%s %s)",
+  Msg::Info("Reparam: %lu bent crease curve%s shorter than twice the mesh "
+            "size not kept (surface%s %s)",
             small.size(), small.size() > 1 ? "s" : "",
             faces.size() > 1 ? "s" : "", tags.c_str());
   return (int)small.size();

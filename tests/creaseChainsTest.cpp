@@ -8,83 +8,6 @@
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 
-TEST(creaseChains, chainsAreCutAtBranchesTrimmedAndKeptWhenLong)
-{
-  // a 6 x 6 grid (7 nodes a row): creases along the row j = 3 (nodes 21 ..
-  // 27) and up from its node 24 (24, 31, 38): three chains from the branch
-  // point 24
-  testTriangulation grid = rectangleGrid(6, 6, 6., 6.);
-  std::set<std::pair<int, int> > creases;
-  for(int i = 21; i < 27; i++) creases.insert({i, i + 1});
-  creases.insert({24, 31});
-  creases.insert({31, 38});
-  auto isCrease = [&creases](int a, int b) {
-    return creases.count({std::min(a, b), std::max(a, b)}) > 0;
-  };
-  std::vector<std::vector<int> > chains =
-    creaseChains(grid.points, grid.triangles, isCrease, {}, 0., 0.);
-  ASSERT_EQ(chains.size(), 3u);
-  for(auto &c : chains) {
-    if(c.front() != 24) std::reverse(c.begin(), c.end());
-    EXPECT_EQ(c.front(), 24);
-  }
-  std::sort(chains.begin(), chains.end());
-  EXPECT_EQ(chains[0], (std::vector<int>{24, 23, 22, 21}));
-  EXPECT_EQ(chains[1], (std::vector<int>{24, 25, 26, 27}));
-  EXPECT_EQ(chains[2], (std::vector<int>{24, 31, 38}));
-
-  // nodes closer than 1.5 to the point (0, 3) (nodes 21, 22) are trimmed
-  // off the first chain; then chains shorter than 2.5 are dropped
-  chains = creaseChains(grid.points, grid.triangles, isCrease,
-                        {SPoint3(0., 3., 0.)}, 1.5, 2.5);
-  ASSERT_EQ(chains.size(), 1u);
-  std::vector<int> kept = chains[0];
-  if(kept.front() != 24) std::reverse(kept.begin(), kept.end());
-  EXPECT_EQ(kept, (std::vector<int>{24, 25, 26, 27}));
-}
-
-TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
-{
-  // z = max(0, y - 0.3) |x - 0.5| over a 20 x 20 grid of the unit square:
-  // a crease along x = 0.5, sharp (> 40 degrees) for y above 0.6, that ends
-  // inside the face: it bounds no patch, and the mesh follows it anyway
-  // (at a size under half its length: creaseShorterThanTwice... below)
-  testTriangulation t = rectangleGrid(20, 20, 1., 1.);
-  for(auto &p : t.points)
-    p = SPoint3(p.x(), p.y(),
-                1.2 * std::max(0., p.y() - 0.3) * std::fabs(p.x() - 0.5));
-  std::vector<std::string> log = remeshWithRecipe(t, 0.1);
-  int embedded = 0;
-  for(const auto &l : log) {
-    EXPECT_EQ(l.find("Error"), std::string::npos) << l;
-    embedded += l.find("kept as embedded curve") != std::string::npos;
-  }
-  EXPECT_EQ(embedded, 1);
-  EXPECT_TRUE(surfacesWithoutElements().empty());
-  // the curve inside is no boundary: the free edges are the square's sides
-  std::size_t nonManifold = 0;
-  for(const auto &e : freeMeshEdges(&nonManifold)) {
-    std::vector<double> p1, p2, par;
-    gmsh::model::mesh::getNode(e.first, p1, par);
-    gmsh::model::mesh::getNode(e.second, p2, par);
-    const double x = 0.5 * (p1[0] + p2[0]), y = 0.5 * (p1[1] + p2[1]);
-    EXPECT_TRUE(std::fabs(x) < 1e-9 || std::fabs(x - 1.) < 1e-9 ||
-                std::fabs(y) < 1e-9 || std::fabs(y - 1.) < 1e-9)
-      << x << " " << y;
-  }
-  EXPECT_EQ(nonManifold, 0u);
-  // mesh nodes on the crease, from its end inside (y = 0.65, its first
-  // sharp edge) to near the boundary: the curve's ends and its 1D nodes
-  std::vector<std::size_t> tags;
-  std::vector<double> coords, params;
-  gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false);
-  int onCrease = 0;
-  for(std::size_t i = 0; i + 2 < coords.size(); i += 3)
-    onCrease += std::fabs(coords[i] - 0.5) < 1e-12 && coords[i + 1] > 0.6 &&
-                coords[i + 1] < 0.99;
-  EXPECT_GE(onCrease, 3);
-}
-
 namespace {
 
   // The square z = 1.2 max(0, y - 0.05) |x - 0.5| over a 30 x 30 grid
@@ -129,10 +52,89 @@ namespace {
 
 } // namespace
 
-TEST(creaseChains, creaseShorterThanTwiceTheMeshSizeIsNotKept)
+TEST(creaseChains, chainsAreCutAtBranchesTrimmedAndKeptWhenLong)
 {
-  // at the size 0.8 the crease would get two segments cutting its bend,
-  // with corners inside the face at their ends: not kept, and no node
+  // a 6 x 6 grid (7 nodes a row): creases along the row j = 3 (nodes 21 ..
+  // 27) and up from its node 24 (24, 31, 38): three chains from the branch
+  // point 24
+  testTriangulation grid = rectangleGrid(6, 6, 6., 6.);
+  std::set<std::pair<int, int> > creases;
+  for(int i = 21; i < 27; i++) creases.insert({i, i + 1});
+  creases.insert({24, 31});
+  creases.insert({31, 38});
+  auto isCrease = [&creases](int a, int b) {
+    return creases.count({std::min(a, b), std::max(a, b)}) > 0;
+  };
+  std::vector<std::vector<int> > chains =
+    creaseChains(grid.points, grid.triangles, isCrease, {}, 0., 0.);
+  ASSERT_EQ(chains.size(), 3u);
+  for(auto &c : chains) {
+    if(c.front() != 24) std::reverse(c.begin(), c.end());
+    EXPECT_EQ(c.front(), 24);
+  }
+  std::sort(chains.begin(), chains.end());
+  EXPECT_EQ(chains[0], (std::vector<int>{24, 23, 22, 21}));
+  EXPECT_EQ(chains[1], (std::vector<int>{24, 25, 26, 27}));
+  EXPECT_EQ(chains[2], (std::vector<int>{24, 31, 38}));
+
+  // nodes closer than 1.5 to the point (0, 3) (nodes 21, 22) are trimmed
+  // off the first chain; then chains shorter than 2.5 are dropped
+  chains = creaseChains(grid.points, grid.triangles, isCrease,
+                        {SPoint3(0., 3., 0.)}, 1.5, 2.5);
+  ASSERT_EQ(chains.size(), 1u);
+  std::vector<int> kept = chains[0];
+  if(kept.front() != 24) std::reverse(kept.begin(), kept.end());
+  EXPECT_EQ(kept, (std::vector<int>{24, 25, 26, 27}));
+}
+
+TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
+{
+  // z = max(0, y - 0.3) |x - 0.5| over a 20 x 20 grid of the unit square:
+  // a crease along x = 0.5, sharp (> 40 degrees) for y above 0.6, that ends
+  // inside the face: it bounds no patch, and the mesh follows it anyway
+  // (straight: kept though shorter than twice the size)
+  testTriangulation t = rectangleGrid(20, 20, 1., 1.);
+  for(auto &p : t.points)
+    p = SPoint3(p.x(), p.y(),
+                1.2 * std::max(0., p.y() - 0.3) * std::fabs(p.x() - 0.5));
+  std::vector<std::string> log = remeshWithRecipe(t, 0.15);
+  EXPECT_FALSE(creaseNotKept(log));
+  int embedded = 0;
+  for(const auto &l : log) {
+    EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+    embedded += l.find("kept as embedded curve") != std::string::npos;
+  }
+  EXPECT_EQ(embedded, 1);
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  // the curve inside is no boundary: the free edges are the square's sides
+  std::size_t nonManifold = 0;
+  for(const auto &e : freeMeshEdges(&nonManifold)) {
+    std::vector<double> p1, p2, par;
+    gmsh::model::mesh::getNode(e.first, p1, par);
+    gmsh::model::mesh::getNode(e.second, p2, par);
+    const double x = 0.5 * (p1[0] + p2[0]), y = 0.5 * (p1[1] + p2[1]);
+    EXPECT_TRUE(std::fabs(x) < 1e-9 || std::fabs(x - 1.) < 1e-9 ||
+                std::fabs(y) < 1e-9 || std::fabs(y - 1.) < 1e-9)
+      << x << " " << y;
+  }
+  EXPECT_EQ(nonManifold, 0u);
+  // mesh nodes on the crease, from its end inside (y = 0.65, its first
+  // sharp edge) to near the boundary: the curve's ends and its 1D nodes
+  std::vector<std::size_t> tags;
+  std::vector<double> coords, params;
+  gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false);
+  int onCrease = 0;
+  for(std::size_t i = 0; i + 2 < coords.size(); i += 3)
+    onCrease += std::fabs(coords[i] - 0.5) < 1e-12 && coords[i + 1] > 0.6 &&
+                coords[i + 1] < 0.99;
+  EXPECT_GE(onCrease, 3);
+}
+
+TEST(creaseChains, bentCreaseShorterThanTwiceTheMeshSizeIsNotKept)
+{
+  // at the size 0.8 the crease (ends 0.65 of its length apart) would get
+  // two segments cutting its bend, with corners inside the face at their
+  // ends: not kept, and no node
   // of it left outside the triangles; at 0.1 it is kept
   std::vector<std::string> log = remeshWithRecipe(bentCrease(), 0.8);
   for(const auto &l : log) EXPECT_EQ(l.find("Error"), std::string::npos) << l;

@@ -1,6 +1,8 @@
 // Reparam - a curve's node slid along its input polyline
 
+#include <array>
 #include <cmath>
+#include <vector>
 #include <gtest/gtest.h>
 #include "curveNodeSlide.h"
 #include "triangleQuality.h"
@@ -13,6 +15,20 @@ namespace {
     std::vector<SPoint3> p;
     for(int i = 0; i <= 4; i++) p.push_back(SPoint3(i, 0., 0.));
     return p;
+  }
+
+  // a node at t on the axis between neighbours at 0 and 4, with the
+  // triangles (node, a, b) of `opposite`
+  curveNodeRing ringOnAxis(double t,
+                           const std::vector<std::array<SPoint3, 2> > &opposite)
+  {
+    curveNodeRing ring;
+    ring.polyline = axis();
+    ring.t = t;
+    ring.before = 0.;
+    ring.after = 4.;
+    ring.opposite = opposite;
+    return ring;
   }
 
   double signedArea(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c)
@@ -38,14 +54,9 @@ TEST(curveNodeSlide, nodeGoesWhereItsTrianglesAreBest)
 {
   // neighbours at 0 and 4, an apex above 2: with the node at 1 one
   // triangle is thin; at 2 both are right triangles of kappa 0.82
-  curveNodeRing ring;
-  ring.polyline = axis();
-  ring.t = 1.;
-  ring.before = 0.;
-  ring.after = 4.;
   const SPoint3 apex(2., 1.7, 0.);
-  ring.opposite = {{{SPoint3(4., 0., 0.), apex}},
-                   {{apex, SPoint3(0., 0., 0.)}}};
+  const curveNodeRing ring = ringOnAxis(
+    1., {{{SPoint3(4., 0., 0.), apex}}, {{apex, SPoint3(0., 0., 0.)}}});
   const curveNodeSlide s = slideCurveNode(ring);
   EXPECT_NEAR(s.t, 2., 1e-12);
   EXPECT_LT(s.worstBefore, 0.75);
@@ -78,13 +89,8 @@ TEST(curveNodeSlide, noTriangleTurnsOver)
   // one triangle, thin with the node at 1; past x = 3 it turns over (and
   // its kappa would be higher): the node goes no farther than where it
   // still faces the same way
-  curveNodeRing ring;
-  ring.polyline = axis();
-  ring.t = 1.;
-  ring.before = 0.;
-  ring.after = 4.;
   const SPoint3 a(3., 1., 0.), b(2.2, 0.2, 0.);
-  ring.opposite = {{{a, b}}};
+  const curveNodeRing ring = ringOnAxis(1., {{{a, b}}});
   const double before = signedArea(SPoint3(1., 0., 0.), a, b);
   const curveNodeSlide s = slideCurveNode(ring);
   EXPECT_GT(s.worstAfter, s.worstBefore);
@@ -95,14 +101,9 @@ TEST(curveNodeSlide, aNodeAHairFromItsNeighbourMovesAway)
 {
   // the node 0.1 from its neighbour at 4: a sliver towards the apex; half
   // way it is gone
-  curveNodeRing ring;
-  ring.polyline = axis();
-  ring.t = 3.9;
-  ring.before = 0.;
-  ring.after = 4.;
   const SPoint3 apex(2., 1.7, 0.);
-  ring.opposite = {{{SPoint3(4., 0., 0.), apex}},
-                   {{apex, SPoint3(0., 0., 0.)}}};
+  const curveNodeRing ring = ringOnAxis(
+    3.9, {{{SPoint3(4., 0., 0.), apex}}, {{apex, SPoint3(0., 0., 0.)}}});
   const curveNodeSlide s = slideCurveNode(ring);
   EXPECT_LT(s.worstBefore, 0.1);
   EXPECT_GT(s.worstAfter, 0.8);

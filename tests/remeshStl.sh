@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# CTest: the STL recipe (Frontal-Delaunay, the automatic map) on a mesh, at
-# a given size; prints Gmsh's log.
+# CTest: the STL recipe (the automatic map) on a mesh, at a given size,
+# with a planar mesher (6, Frontal-Delaunay, by default) and Mesh.RecombineAll
+# (0 by default); prints Gmsh's log.
 #
-#   remeshStl.sh GMSH_EXECUTABLE MESH.stl SIZE
+#   remeshStl.sh GMSH_EXECUTABLE MESH.stl SIZE [ALGORITHM [RECOMBINE_ALL]]
 set -euo pipefail
 gmsh=$1
 mesh=$2
 size=$3
+algorithm=${4:-6}
+recombine=${5:-0}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat > "$work/remesh.geo" <<GEO
@@ -15,7 +18,8 @@ ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};
 CreateGeometry;
 Mesh.MeshSizeMin = $size;
 Mesh.MeshSizeMax = $size;
-Mesh.Algorithm = 6;
+Mesh.Algorithm = $algorithm;
+Mesh.RecombineAll = $recombine;
 Mesh 2;
 GEO
 "$gmsh" "$work/remesh.geo" -parse_and_exit 2>&1
