@@ -229,7 +229,9 @@ namespace {
       std::max(distanceToInput(centroidOf(x[a], x[q], x[p])),
                std::max(distanceToInput(centroidOf(x[q], x[b], x[p])),
                         distanceToInput((x[p] + x[q]) * 0.5)));
-    if(far > wasFar + _o.tolerance * x[p].distance(x[q])) return false;
+    const double tolerance =
+      before < _o.sliver ? _o.sliverTolerance : _o.tolerance;
+    if(far > wasFar + tolerance * x[p].distance(x[q])) return false;
     replaceCorner(t, b, q); // (a, b, p) -> (a, q, p)
     replaceCorner(s, a, p); // (b, a, q) -> (b, p, q) = (q, b, p)
     _known[t] = _known[s] = false;

@@ -498,3 +498,41 @@ TEST(surfaceMeshOptimizer, trianglesKnownAlongTheInputAreNotTested)
   o.knownAlong[10] = true;
   EXPECT_EQ(optimizeOnInput(trusted, in, onInput, o).againstBefore, 0u);
 }
+
+TEST(surfaceMeshOptimizer, aSliverIsFlippedAcrossARidgeWithinItsOwnTolerance)
+{
+  // a roof z = -|y| (a 90 degree ridge along x), a sliver (a, b, p) along
+  // the ridge and a triangle (b, a, q) down one side: the flip to (p, q)
+  // cuts the ridge off by 2.5 % of the new edge's length, more than the
+  // 2 % a flip may; for a sliver it may by 20 %
+  surfaceMesh input;
+  const testTriangulation roof = rectangleGrid(8, 8, 4., 4.);
+  for(const SPoint3 &x : roof.points) {
+    const double y = x.y() - 2.;
+    input.points.push_back(SPoint3(x.x() - 2., y, -std::fabs(y)));
+  }
+  input.triangles = roof.triangles;
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  auto twoTriangles = []() {
+    optimizableMesh m;
+    m.points = {SPoint3(-1., 0., 0.), SPoint3(1., 0., 0.),
+                SPoint3(0., 0.05, -0.05), SPoint3(0., -1., -1.)};
+    m.triangles = {{{0, 1, 2}}, {{1, 0, 3}}};
+    m.movable.assign(4, false);
+    return m;
+  };
+  meshOptimizationOptions o;
+  o.insertAbove = 0.;
+  o.smoothPasses = 0;
+  o.sliverTolerance = o.tolerance;
+  optimizableMesh kept = twoTriangles();
+  EXPECT_EQ(optimizeOnInput(kept, input, onInput, o).flips, 0u);
+  EXPECT_LT(worstKappa(kept), 0.1);
+
+  o.sliverTolerance = meshOptimizationOptions().sliverTolerance;
+  optimizableMesh flipped = twoTriangles();
+  const meshOptimizationResult r = optimizeOnInput(flipped, input, onInput, o);
+  EXPECT_EQ(r.flips, 1u);
+  EXPECT_GT(worstKappa(flipped), 0.5);
+  EXPECT_EQ(r.againstAfter, 0u);
+}
