@@ -10,7 +10,9 @@
 #include "MVertex.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "reparamInputMesh.h"
 #include "reparamOptimizableMesh.h"
+#include "reparamReport.h"
 
 namespace {
 
@@ -66,6 +68,14 @@ optimizableMeshOf(const std::vector<GFace *> &faces,
     for(GEdge *ge : gf->embeddedEdges()) lockLines(ge, index, m);
   for(GEdge *ge : lockedCurves) lockLines(ge, index, m);
   return m;
+}
+
+bool reparamOptimizableFace(const GFace *gf)
+{
+  const parametrizationRecord *map = findParametrization(gf);
+  return map && map->map > 0 && gf->geomType() == GEntity::DiscreteSurface &&
+         !gf->triangles.empty() && gf->quadrangles.empty() &&
+         !gf->stl_triangles.empty() && !keptAsInput(gf);
 }
 
 bool meshReversedOnInput(const GFace *gf, const surfaceMesh &input,

@@ -31,6 +31,11 @@ optimizableMesh optimizableMeshOf(
   const std::vector<GEdge *> &lockedCurves, std::vector<MVertex *> &nodes,
   std::vector<int> &triangleFace);
 
+// Whether the optimizers may change gf's triangles after it was meshed: a
+// discrete face Reparam parametrized, meshed with triangles only, not kept
+// as its input
+bool reparamOptimizableFace(const GFace *gf);
+
 // Whether most triangles of gf's mesh turn against the input (searched by
 // onInput, built on it), counted on at most about a hundred of them: a
 // planar mesh is consistently oriented

@@ -24,15 +24,6 @@
 
 namespace {
 
-  // A face whose triangles Reparam's optimizer may change
-  bool optimizable(GFace *gf)
-  {
-    const parametrizationRecord *map = findParametrization(gf);
-    return map && map->map > 0 && gf->geomType() == GEntity::DiscreteSurface &&
-           !gf->triangles.empty() && gf->quadrangles.empty() &&
-           !gf->stl_triangles.empty() && !keptAsInput(gf);
-  }
-
   // The triangles whose face's own optimization left none against the
   // input, farther than two rings from a cut: they are not tested again (a
   // quarter of the time here went to that). Near a cut, the points of a
@@ -407,7 +398,7 @@ std::vector<cutGroup> facesJoinedByCuts(GModel *m)
   std::vector<GFace *> faces;
   std::map<GFace *, int> index;
   for(auto it = m->firstFace(); it != m->lastFace(); ++it)
-    if(optimizable(*it)) {
+    if(reparamOptimizableFace(*it)) {
       index[*it] = (int)faces.size();
       faces.push_back(*it);
     }

@@ -31,8 +31,8 @@ void reparamEndSizeGrading(GFace *gf);
 // Begin also refuses, with an error, the discrete curves whose mesh would
 // have more than 1e7 segments (the size far below the model's scale), which
 // Gmsh would spend hours on; End gives them back their meshing method.
-// With Reparam's maps, Begin first takes the crease curves shorter than
-// twice the size out of their faces, and End deletes their 1D meshes
+// With Reparam's maps, Begin first takes the bent crease curves shorter
+// than twice the size out of their faces, and End deletes their 1D meshes
 // (Geo/reparamCreaseCurves.h): they are no sources of sizes.
 void reparamBeginCurveSizeGrading(GModel *m);
 void reparamEndCurveSizeGrading(GModel *m);

@@ -16,7 +16,7 @@
 #include "curveNodeSlide.h"
 #include "meshFidelity.h"
 #include "reparamCurveMesh.h"
-#include "reparamInputMesh.h"
+#include "reparamOptimizableMesh.h"
 #include "reparamReport.h"
 #include "reparamSlideCurveNodes.h"
 #include "triangleQuality.h"
@@ -30,15 +30,6 @@ namespace {
   // the curve's segments stay within this share of their length of the
   // input polyline (or no farther than they were)
   const double sag = 0.05;
-
-  // A face whose triangles may change here
-  bool slidable(const GFace *gf)
-  {
-    const parametrizationRecord *map = findParametrization(gf);
-    return map && map->map > 0 && gf->geomType() == GEntity::DiscreteSurface &&
-           !gf->triangles.empty() && gf->quadrangles.empty() &&
-           !gf->stl_triangles.empty() && !keptAsInput(gf);
-  }
 
   struct triangleAround {
     MTriangle *triangle;
@@ -204,7 +195,7 @@ namespace {
     std::set<MVertex *> fixed;
     for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
       GFace *gf = *it;
-      const bool free = slidable(gf);
+      const bool free = reparamOptimizableFace(gf);
       for(std::size_t i = 0; i < gf->getNumMeshElements(); i++) {
         MElement *e = gf->getMeshElement(i);
         for(std::size_t j = 0; j < e->getNumVertices(); j++) {

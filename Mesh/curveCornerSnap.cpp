@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include "curveCornerSnap.h"
+#include "curveNodeSlide.h"
 #include "SVector3.h"
 
 namespace {
@@ -11,7 +12,8 @@ namespace {
   // given arc length
   struct arcLength {
     std::vector<double> at;
-    explicit arcLength(const std::vector<SPoint3> &polyline) : at(polyline.size(), 0.)
+    explicit arcLength(const std::vector<SPoint3> &polyline)
+      : at(polyline.size(), 0.)
     {
       for(std::size_t i = 1; i < polyline.size(); i++)
         at[i] = at[i - 1] + polyline[i - 1].distance(polyline[i]);
@@ -25,20 +27,13 @@ namespace {
     double parameter(double length) const
     {
       auto it = std::upper_bound(at.begin(), at.end(), length);
-      int i = std::min(std::max((int)(it - at.begin()) - 1, 0), (int)at.size() - 2);
+      int i =
+        std::min(std::max((int)(it - at.begin()) - 1, 0), (int)at.size() - 2);
       const double l = at[i + 1] - at[i];
-      return i + (l > 0. ? std::min(std::max((length - at[i]) / l, 0.), 1.) : 0.);
+      return i +
+             (l > 0. ? std::min(std::max((length - at[i]) / l, 0.), 1.) : 0.);
     }
   };
-
-
-  SPoint3 pointAt(const std::vector<SPoint3> &polyline, double t)
-  {
-    const int last = (int)polyline.size() - 1;
-    int i = std::min(std::max((int)std::floor(t), 0), last - 1);
-    const double s = std::min(std::max(t - i, 0.), 1.);
-    return polyline[i] + (polyline[i + 1] - polyline[i]) * s;
-  }
 
   // The angle the polyline turns by at its node i, seen at the scale w:
   // between the chords from w before it and to w after it (in arc length).
@@ -48,8 +43,10 @@ namespace {
   double turningAngle(const std::vector<SPoint3> &polyline,
                       const arcLength &arc, int i, double w)
   {
-    const SPoint3 before = pointAt(polyline, arc.parameter(arc.at[i] - w));
-    const SPoint3 after = pointAt(polyline, arc.parameter(arc.at[i] + w));
+    const SPoint3 before =
+      pointOnPolyline(polyline, arc.parameter(arc.at[i] - w));
+    const SPoint3 after =
+      pointOnPolyline(polyline, arc.parameter(arc.at[i] + w));
     SVector3 in(before, polyline[i]), out(polyline[i], after);
     const double l = in.norm() * out.norm();
     if(l <= 0.) return 0.;
@@ -117,8 +114,8 @@ namespace {
   // How many of the old segments lie between arc lengths a and b (by the
   // fraction of each inside): the piece gets as many, rounded, so that the
   // size along the curve stays what Gmsh chose
-  double segmentsBetween(const arcLength &arc, const std::vector<double> &params,
-                         double a, double b)
+  double segmentsBetween(const arcLength &arc,
+                         const std::vector<double> &params, double a, double b)
   {
     double n = 0.;
     for(std::size_t s = 0; s + 1 < params.size(); s++) {
@@ -131,16 +128,15 @@ namespace {
 
 } // namespace
 
-std::vector<double>
-snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
-                        const std::vector<double> &params,
-                        const std::function<bool(int)> &allowed,
-                        std::vector<int> *taken)
+std::vector<double> snapCurveNodesToCorners(
+  const std::vector<SPoint3> &polyline, const std::vector<double> &params,
+  const std::function<bool(int)> &allowed, std::vector<int> *taken)
 {
   if(taken) taken->clear();
   if(polyline.size() < 3 || params.size() < 3) return params;
   const arcLength arc(polyline);
-  const std::vector<int> corners = chooseCorners(polyline, arc, params, allowed);
+  const std::vector<int> corners =
+    chooseCorners(polyline, arc, params, allowed);
   if(taken) *taken = corners;
   if(corners.empty()) return params;
   // the curve cut at its corners, each piece meshed evenly with its share
@@ -153,7 +149,8 @@ snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
     const double a = arc.of(ends[k]), b = arc.of(ends[k + 1]);
     const int n =
       std::max(1, (int)std::lround(segmentsBetween(arc, params, a, b)));
-    for(int i = 1; i < n; i++) snapped.push_back(arc.parameter(a + (b - a) * i / n));
+    for(int i = 1; i < n; i++)
+      snapped.push_back(arc.parameter(a + (b - a) * i / n));
     snapped.push_back(ends[k + 1]);
   }
   return snapped;

@@ -10,6 +10,9 @@
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "gmshTestEnvironment.h"
+#include "curveNodeSlide.h"
+#include "reparamCurveMesh.h"
+#include "reparamOptimizableMesh.h"
 #include "reparamSlideCurveNodes.h"
 #include "triangleQuality.h"
 
@@ -77,4 +80,24 @@ TEST(reparamSlideCurveNodes, aBorderNodeAHairFromItsNeighbourSlidesBack)
   EXPECT_NEAR(node->y(), 0., 1e-12); // still on the side
   const GPoint q = side->point(t);
   EXPECT_NEAR(node->x(), q.x(), 1e-12);
+  // the slide was judged where Gmsh's curve puts the node: parameter i at
+  // the input polyline's node i
+  std::vector<SPoint3> polyline;
+  ASSERT_TRUE(reparamInputPolyline(side, polyline));
+  EXPECT_LT(pointOnPolyline(polyline, t).distance(node->point()), 1e-12);
+}
+
+TEST(reparamSlideCurveNodes, onlyFacesReparamMeshedWithTrianglesMayChange)
+{
+  remeshWithRecipe(rectangleGrid(10, 10, 1., 1.), 0.2);
+  GModel *m = GModel::current();
+  ASSERT_GT(m->getNumFaces(), 0u);
+  GFace *gf = *m->firstFace();
+  EXPECT_TRUE(reparamOptimizableFace(gf));
+  // without its triangles (or with quadrangles) it is not
+  std::vector<MTriangle *> triangles;
+  triangles.swap(gf->triangles);
+  EXPECT_FALSE(reparamOptimizableFace(gf));
+  triangles.swap(gf->triangles);
+  EXPECT_TRUE(reparamOptimizableFace(gf));
 }
