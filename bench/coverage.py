@@ -238,6 +238,8 @@ def read_report(path):
             "hausdorff": report["total"]["hausdorffPercent"],
             "inverted": report["total"]["inverted"],
             "kappa min": report["total"]["kappaMin"],
+            "kappa mean": report["total"].get("kappaMean"),
+            "tau": report["total"].get("tau"),
             # Mesh.CompoundOptimize: the worst kappa before it, its time
             "optimization": report["total"].get("optimization"),
         }
