@@ -155,12 +155,13 @@ bool reparamOptimizeMeshedFace(GFace *gf)
     return true;
   Msg::Info("Reparam: surface %d: optimized on the input: kappa min %.3g -> "
             "%.3g, %lu -> %lu triangles below %g, %lu -> %lu against the "
-            "input; %lu input nodes the mesh cut off inserted, %lu long "
-            "edges split, %lu short ones collapsed, %lu tangles re-meshed, "
-            "%lu flips and %lu node moves in %lu passes (%g s)",
+            "input; %lu input nodes the mesh cut off inserted (%lu onto a "
+            "node moved there), %lu long edges split, %lu short ones "
+            "collapsed, %lu tangles re-meshed, %lu flips and %lu node moves "
+            "in %lu passes (%g s)",
             gf->tag(), r.minBefore, r.minAfter, r.belowBefore, r.belowAfter,
-            o.target, r.againstBefore, r.againstAfter, r.inserted, r.splits,
-            r.collapses, r.cavities, r.flips, r.moves, r.passes,
+            o.target, r.againstBefore, r.againstAfter, r.inserted, r.snapped,
+            r.splits, r.collapses, r.cavities, r.flips, r.moves, r.passes,
             TimeOfDay() - t0);
   return true;
 }

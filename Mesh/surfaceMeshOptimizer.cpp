@@ -751,10 +751,11 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
   r.minBefore = worstKappa(m);
   countPoorTriangles(m, o, r.belowBefore, r.againstBefore);
   for(int round = 0; round < std::max(1, o.maxInsertionRounds); round++) {
+    std::size_t snapped = 0;
     const std::size_t inserted =
-      o.insertAbove > 0. ?
-        insertFarInputNodes(m, input, onInput, o.reversed, o.insertAbove) :
-        0;
+      o.insertAbove > 0. ? insertFarInputNodes(m, input, onInput, o.reversed,
+                                               o.insertAbove, &snapped) :
+                           0;
     const std::size_t splits =
       splitLongEdges(m, input, onInput, o.reversed, o.splitAbove);
     std::vector<int> collapsedInto;
@@ -764,6 +765,7 @@ meshOptimizationResult optimizeOnInput(optimizableMesh &m,
                            4. * o.tolerance, &collapsedInto) :
         0;
     r.inserted += inserted;
+    r.snapped += snapped;
     r.splits += splits;
     r.collapses += collapses;
     improvePoorTriangles(m, input, onInput, o, r, collapsedInto);

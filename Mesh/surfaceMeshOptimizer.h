@@ -106,7 +106,9 @@ struct meshOptimizationResult {
   std::size_t belowBefore = 0, belowAfter = 0; // triangles below the target
   std::size_t againstBefore = 0, againstAfter = 0; // triangles
   std::size_t flips = 0, moves = 0, passes = 0;
-  std::size_t inserted = 0; // input nodes
+  // input nodes the mesh cut off, now mesh nodes: new ones, or `snapped`
+  // onto a node moved there (Mesh/farInputNodes.h)
+  std::size_t inserted = 0, snapped = 0;
   std::size_t splits = 0; // long edges
   std::size_t collapses = 0; // short edges
   std::size_t cavities = 0; // tangles re-meshed (Mesh/tangledCavity.h)

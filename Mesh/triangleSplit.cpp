@@ -30,17 +30,59 @@ namespace {
   }
 } // namespace
 
-triangleSplitter::triangleSplitter(optimizableMesh &m,
-                                   const surfaceMesh &input,
+triangleSplitter::triangleSplitter(optimizableMesh &m, const surfaceMesh &input,
                                    const closestTriangleSearch &onInput,
                                    bool reversed)
   : _m(m), _input(input), _onInput(onInput), _reversed(reversed)
 {
   for(std::size_t t = 0; t < m.triangles.size(); t++)
     for(int k = 0; k < 3; k++)
-      _edges[edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3])]
-        .push_back((int)t);
+      _edges[edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(
+        (int)t);
   _touched.assign(m.triangles.size(), false);
+  _around.resize(m.points.size());
+  for(std::size_t t = 0; t < m.triangles.size(); t++)
+    for(int v : m.triangles[t]) _around[v].push_back((int)t);
+}
+
+// The triangles around `triangles` (untouched until now, so the edge map
+// still holds their edges) wait for the next round
+void triangleSplitter::touchAround(const std::vector<int> &triangles)
+{
+  for(int t : triangles)
+    for(int k = 0; k < 3; k++)
+      for(int s :
+          edgeTriangles(_m.triangles[t][k], _m.triangles[t][(k + 1) % 3]))
+        _touched[s] = true;
+}
+
+bool triangleSplitter::moveNode(int v, const SPoint3 &x, int inputNode,
+                                double floor)
+{
+  if(v >= (int)_around.size() || !_m.movable[v] || _around[v].empty())
+    return false;
+  // any change to v's triangles this round touched one of those at its start
+  const std::vector<int> &ring = _around[v];
+  for(int t : ring)
+    if(_touched[t]) return false;
+  const int n = (int)_m.points.size(); // v's index in the triangles below
+  std::vector<std::array<int, 3> > moved;
+  for(int t : ring) {
+    std::array<int, 3> c = _m.triangles[t];
+    for(int &w : c)
+      if(w == v) w = n;
+    if(against(c, x)) return false;
+    moved.push_back(c);
+  }
+  if(worstWith(moved, x) < floor) return false;
+  touchAround(ring);
+  _m.landing.resize(_m.points.size(), -1);
+  _m.inputNode.resize(_m.points.size(), -1);
+  _m.points[v] = x;
+  _m.movable[v] = false;
+  _m.landing[v] = _onInput.closest(x).triangle;
+  _m.inputNode[v] = inputNode;
+  return true;
 }
 
 const std::vector<int> &triangleSplitter::edgeTriangles(int a, int b)
@@ -83,8 +125,8 @@ bool triangleSplitter::placeAboveFloor(
   double before = 1.;
   for(int t : out) {
     const std::array<int, 3> &c = _m.triangles[t];
-    before = std::min(before, triangleKappa(_m.points[c[0]], _m.points[c[1]],
-                                            _m.points[c[2]]));
+    before = std::min(
+      before, triangleKappa(_m.points[c[0]], _m.points[c[1]], _m.points[c[2]]));
   }
   const double least = std::min(before, floor);
   if(worstWith(in, x) >= least) return true;
@@ -106,20 +148,14 @@ bool triangleSplitter::placeAboveFloor(
 // against the input
 bool triangleSplitter::apply(const std::vector<int> &out,
                              const std::vector<std::array<int, 3> > &in,
-                             const SPoint3 &onEdge, bool movable,
-                             int inputNode, double floor)
+                             const SPoint3 &onEdge, bool movable, int inputNode,
+                             double floor)
 {
   SPoint3 x = onEdge;
   if(floor > 0. && !placeAboveFloor(out, in, movable, floor, x)) return false;
   for(const std::array<int, 3> &t : in)
     if(against(t, x)) return false;
-  // the triangles around `out` (untouched until now, so the edge map still
-  // holds their edges) wait for the next round
-  for(int t : out)
-    for(int k = 0; k < 3; k++)
-      for(int s : edgeTriangles(_m.triangles[t][k],
-                                _m.triangles[t][(k + 1) % 3]))
-        _touched[s] = true;
+  touchAround(out);
   _m.points.push_back(x);
   _m.movable.push_back(movable);
   _m.landing.push_back(_onInput.closest(x).triangle);
@@ -172,6 +208,6 @@ bool triangleSplitter::splitEdge(int t, int k, const SPoint3 &x, bool movable,
   if(q < 0) return false;
   const int n = (int)_m.points.size();
   // (a, b, p) and (b, a, q) become (a, n, p), (n, b, p), (b, n, q), (n, a, q)
-  return apply({t, s}, {{{a, n, p}}, {{n, b, p}}, {{b, n, q}}, {{n, a, q}}},
-               x, movable, inputNode, floor);
+  return apply({t, s}, {{{a, n, p}}, {{n, b, p}}, {{b, n, q}}, {{n, a, q}}}, x,
+               movable, inputNode, floor);
 }

@@ -34,6 +34,11 @@ public:
   // movable node at the centroid of the four corners (on the input) is not
   bool splitEdge(int t, int k, const SPoint3 &x, bool movable, int inputNode,
                  double floor = -1.);
+  // movable node v moved to x, a point of the input (input node
+  // `inputNode`), and then kept there: refused if a triangle around v
+  // changed this round, would point against the input or fall below kappa
+  // `floor`
+  bool moveNode(int v, const SPoint3 &x, int inputNode, double floor);
   // whether t may still change this round
   bool untouched(int t) const { return !_touched[t]; }
   // the triangles on edge (a, b) at the start of the round
@@ -46,16 +51,17 @@ private:
   const bool _reversed;
   std::map<std::pair<int, int>, std::vector<int> > _edges;
   std::vector<bool> _touched;
+  std::vector<std::vector<int> > _around; // per node, at the round's start
+  void touchAround(const std::vector<int> &triangles);
   bool against(const std::array<int, 3> &t, const SPoint3 &x) const;
   double worstWith(const std::vector<std::array<int, 3> > &in,
                    const SPoint3 &x) const;
   bool placeAboveFloor(const std::vector<int> &out,
-                       const std::vector<std::array<int, 3> > &in,
-                       bool movable, double floor, SPoint3 &x) const;
+                       const std::vector<std::array<int, 3> > &in, bool movable,
+                       double floor, SPoint3 &x) const;
   bool apply(const std::vector<int> &out,
-             const std::vector<std::array<int, 3> > &in,
-             const SPoint3 &onEdge, bool movable, int inputNode,
-             double floor = -1.);
+             const std::vector<std::array<int, 3> > &in, const SPoint3 &onEdge,
+             bool movable, int inputNode, double floor = -1.);
 };
 
 // Barycentric coordinates of the point of triangle (a, b, c) closest to p
