@@ -24,7 +24,8 @@ struct surfaceMesh;
 // ends share exactly the two opposite corners), turn by less than 45
 // degrees, have no edge longer than 1.4 times the size, a worst kappa no
 // lower than before unless both are above 0.6, pass within `tolerance`
-// times the size of the point removed, and none points against the input
+// times the size of the point removed and of the input nodes around (or no
+// farther than the old triangles did), and none points against the input
 // (reversed: m's triangles turn against the input's). Removes the collapsed
 // points and triangles from m (optimizableMesh::origin and triangleOrigin
 // tell which stay). Returns how many edges; `kept` (if given) gets the

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # CTest: the STL recipe (the automatic map) on a mesh, at a given size,
-# with a planar mesher (6, Frontal-Delaunay, by default) and Mesh.RecombineAll
-# (0 by default); prints Gmsh's log.
+# with a planar mesher (6, Frontal-Delaunay, by default), Mesh.RecombineAll
+# (0 by default) and Mesh.CompoundOptimize (its default if not given);
+# prints Gmsh's log.
 #
-#   remeshStl.sh GMSH_EXECUTABLE MESH.stl SIZE [ALGORITHM [RECOMBINE_ALL]]
+#   remeshStl.sh GMSH_EXECUTABLE MESH.stl SIZE [ALGORITHM [RECOMBINE_ALL
+#                [OPTIMIZE]]]
 set -euo pipefail
 gmsh=$1
 mesh=$2
 size=$3
 algorithm=${4:-6}
 recombine=${5:-0}
+optimize=${6:+Mesh.CompoundOptimize = $6;}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat > "$work/remesh.geo" <<GEO
@@ -20,6 +23,7 @@ Mesh.MeshSizeMin = $size;
 Mesh.MeshSizeMax = $size;
 Mesh.Algorithm = $algorithm;
 Mesh.RecombineAll = $recombine;
+$optimize
 Mesh 2;
 GEO
 "$gmsh" "$work/remesh.geo" -parse_and_exit 2>&1

@@ -433,6 +433,57 @@ TEST(surfaceMeshOptimizer, anEdgeThatCutsARidgeOffIsSplitWhateverItsHalves)
   EXPECT_EQ(folded.triangles.size(), 4u);
 }
 
+namespace {
+
+  // A hexagon of radius 1/6 around node a on the ridge of a roof of slope 1
+  // (ridge along x = 0.5), its corners fixed, and node b 0.05 from a down
+  // the slope (x < 0.5): a collapse of the short edge (a, b) takes a off
+  // the ridge if a may move
+  optimizableMesh ridgeFan(bool aMovable)
+  {
+    optimizableMesh m;
+    auto onRoof = [](double x, double y) {
+      return SPoint3(x, y, 0.5 - std::fabs(x - 0.5));
+    };
+    for(int k = 0; k < 6; k++)
+      m.points.push_back(onRoof(0.5 + std::cos(k * M_PI / 3.) / 6.,
+                                0.5 + std::sin(k * M_PI / 3.) / 6.));
+    const int a = 6, b = 7;
+    m.points.push_back(onRoof(0.5, 0.5));
+    m.points.push_back(onRoof(0.45, 0.5));
+    m.triangles = {{{a, 0, 1}}, {{a, 1, 2}}, {{a, 2, b}}, {{b, 2, 3}},
+                   {{a, b, 4}}, {{b, 3, 4}}, {{a, 4, 5}}, {{a, 5, 0}}};
+    m.movable.assign(8, false);
+    m.movable[a] = aMovable;
+    m.movable[b] = true;
+    m.size.assign(8, 0.2); // edges up to 1.4 times that: 0.24 across
+                           // the fan (the slope makes 0.236)
+    m.landing.assign(8, -1);
+    m.inputNode.assign(8, -1);
+    return m;
+  }
+
+} // namespace
+
+TEST(surfaceMeshOptimizer, collapsesKeepTheInputNodesUnderThem)
+{
+  const surfaceMesh in = asSurfaceMesh(roof(rectangleGrid(60, 60, 1., 1.), 1.));
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  const double tolerance = 0.08, size = 0.2;
+  // both ends movable: they would meet halfway, on the slope, and the
+  // triangles from there across the ridge pass 0.035 under its node at a,
+  // though the point removed stays on them: not collapsed
+  optimizableMesh m = ridgeFan(true);
+  EXPECT_EQ(collapseShortEdges(m, in, onInput, false, 0.6, tolerance), 0u);
+  EXPECT_EQ(m.points.size(), 8u);
+  EXPECT_LE(ridgeDistance(m, in, 0.499, 0.501), tolerance * size);
+  // a fixed on the ridge: b goes onto it, the ridge stays
+  m = ridgeFan(false);
+  EXPECT_EQ(collapseShortEdges(m, in, onInput, false, 0.6, tolerance), 1u);
+  EXPECT_EQ(m.points.size(), 7u);
+  EXPECT_LT(ridgeDistance(m, in, 0.499, 0.501), 1e-12);
+}
+
 TEST(surfaceMeshOptimizer, shortEdgesAreCollapsedKeepingTheMeshValid)
 {
   // A 12 x 12 grid of the bump asked at twice its cell size: inner edges
