@@ -6,6 +6,7 @@
 #include "closestTriangle.h"
 #include "farInputNodes.h"
 #include "longEdgeSplit.h"
+#include "maxMinPlacement.h"
 #include "shortEdgeCollapse.h"
 #include "tangledCavity.h"
 #include "meshFidelity.h"
@@ -133,6 +134,7 @@ namespace {
     void replaceCorner(int t, int from, int to);
     std::pair<double, double> ringKappa(int v, const SPoint3 &at) const;
     SPoint3 worstTriangleApex(int v) const;
+    SPoint3 maxMinPoint(int v) const;
     bool starKernelPoint(int v, SPoint3 &at) const;
     double ringFarthest(int v, const SPoint3 &at, double tolerance,
                         bool checkAgainst, bool &valid,
@@ -301,6 +303,28 @@ namespace {
     const SPoint3 middle = (a + b) * 0.5;
     return SPoint3(middle.x() + side.x(), middle.y() + side.y(),
                    middle.z() + side.z());
+  }
+
+  // Where v lifts the worst triangle around it most, in the plane of its
+  // ring (Mesh/maxMinPlacement.h), from steps of a quarter of its mean edge
+  SPoint3 optimizer::maxMinPoint(int v) const
+  {
+    const std::vector<SPoint3> &x = _m.points;
+    SVector3 normal(0., 0., 0.);
+    std::vector<std::array<SPoint3, 2> > opposite;
+    double edges = 0.;
+    for(int t : _around[v]) {
+      const std::array<int, 3> &c = _m.triangles[t];
+      normal +=
+        crossprod(SVector3(x[c[0]], x[c[1]]), SVector3(x[c[0]], x[c[2]]));
+      int k = 0;
+      while(c[k] != v) k++;
+      opposite.push_back({{x[c[(k + 1) % 3]], x[c[(k + 2) % 3]]}});
+      edges += x[v].distance(x[c[(k + 1) % 3]]);
+    }
+    if(opposite.empty()) return x[v];
+    return maxMinKappaPoint(x[v], opposite, normal,
+                            0.25 * edges / opposite.size());
   }
 
   // The centroid of the kernel of v's ring projected on the plane of the
@@ -559,6 +583,9 @@ namespace {
     const SPoint3 apex = worstTriangleApex(v);
     std::vector<SPoint3> targets = {centroid, (here + centroid) * 0.5, apex,
                                     (here + apex) * 0.5};
+    // the place that lifts the worst triangle most: where each of those
+    // trades one triangle of a tight ring for another
+    if(before.first >= 0.) targets.push_back(maxMinPoint(v));
     // a tangled ring (a triangle folded over its neighbours): the point
     // every triangle around sees on the right side, in the input's tangent
     // plane, when there is one
