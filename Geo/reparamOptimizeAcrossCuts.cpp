@@ -20,6 +20,7 @@
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamSizeGrading.h"
 #include "reparamSlideCurveNodes.h"
 
 namespace {
@@ -431,6 +432,7 @@ std::vector<cutGroup> facesJoinedByCuts(GModel *m)
 
 int reparamOptimizeMeshedModel(GModel *m)
 {
+  reparamRestoreRefusedSurfaces(m);
   if(!getReparamOptions().optimize ||
      getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;

@@ -156,8 +156,10 @@ namespace {
   // Mesh.MeshSizeMax of 1e22: 4e8 segments on a square's side)
   const double mostSegments = 1e7;
 
-  // The curves refused, with their meshing method, restored after Mesh1D
+  // The curves refused, with their meshing method, restored after Mesh1D,
+  // and the surfaces on them, restored after Mesh2D
   std::vector<std::pair<GEdge *, int> > refusedCurves;
+  std::vector<std::pair<GFace *, int> > refusedSurfaces;
 
   // One pass over m's discrete curves: the ones whose mesh would have more
   // than mostSegments segments refused (an error each), and, with a
@@ -178,8 +180,9 @@ namespace {
         continue;
       if(length / size > mostSegments) {
         Msg::Error("Reparam: curve %d would get %.3g segments (length %g, "
-                   "mesh size %g): not meshed. Set Mesh.MeshSizeMax (or "
-                   "Mesh.MeshSizeFactor) to the model's scale",
+                   "mesh size %g): not meshed. Set Mesh.MeshSizeMin and "
+                   "Mesh.MeshSizeMax (or Mesh.MeshSizeFactor) to the "
+                   "model's scale",
                    ge->tag(), length / size, length, size);
         refusedCurves.push_back({ge, ge->meshAttributes.method});
         ge->meshAttributes.method = MESH_NONE;
@@ -217,10 +220,30 @@ void reparamBeginCurveSizeGrading(GModel *m)
 void reparamEndCurveSizeGrading(GModel *m)
 {
   reparamDeleteHiddenCreaseMeshes(m);
-  for(const auto &r : refusedCurves)
-    if(r.first->model() == m) r.first->meshAttributes.method = r.second;
+  for(const auto &r : refusedCurves) {
+    if(r.first->model() != m) continue;
+    r.first->meshAttributes.method = r.second;
+    for(GFace *gf : r.first->faces()) {
+      if(gf->meshAttributes.method == MESH_NONE) continue;
+      Msg::Warning("Reparam: surface %d not meshed: its curve %d is not",
+                   gf->tag(), r.first->tag());
+      refusedSurfaces.push_back({gf, gf->meshAttributes.method});
+      gf->meshAttributes.method = MESH_NONE;
+    }
+  }
   refusedCurves.clear();
   if(curves.model == m) curves = curveGrading();
+}
+
+void reparamRestoreRefusedSurfaces(GModel *m)
+{
+  std::vector<std::pair<GFace *, int> > others;
+  for(const auto &r : refusedSurfaces)
+    if(r.first->model() == m)
+      r.first->meshAttributes.method = r.second;
+    else
+      others.push_back(r);
+  refusedSurfaces.swap(others);
 }
 
 bool reparamCurveSizesGraded(const GEdge *ge)

@@ -30,12 +30,16 @@ void reparamEndSizeGrading(GFace *gf);
 // of kappa 0.1 at their common end, which no 2D grading helps)
 // Begin also refuses, with an error, the discrete curves whose mesh would
 // have more than 1e7 segments (the size far below the model's scale), which
-// Gmsh would spend hours on; End gives them back their meshing method.
+// Gmsh would spend hours on; End gives them back their meshing method, and
+// takes the surfaces on them out of Mesh2D (a warning each: meshed without
+// that curve, MeshAdapt would refine towards the same size for as long)
+// until reparamRestoreRefusedSurfaces, called after Mesh2D.
 // With Reparam's maps, Begin first takes the bent crease curves shorter
 // than twice the size out of their faces, and End deletes their 1D meshes
 // (Geo/reparamCreaseCurves.h): they are no sources of sizes.
 void reparamBeginCurveSizeGrading(GModel *m);
 void reparamEndCurveSizeGrading(GModel *m);
+void reparamRestoreRefusedSurfaces(GModel *m);
 
 // While the curves are meshed: whether the sizes along ge are graded, and
 // the graded size at x where smaller than `size`, else `size` (the 1D

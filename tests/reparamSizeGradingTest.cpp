@@ -226,3 +226,84 @@ TEST(reparamSizeGrading, aCurveMeshOfBillionsOfSegmentsIsRefused)
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
   gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
 }
+
+namespace {
+
+  // A cube of side `side` as 12 discrete triangles, classified at 40
+  // degrees into its 6 faces and 12 edges (the STL recipe's geometry)
+  void classifiedCube(double side)
+  {
+    gmsh::clear();
+    gmsh::model::add("cube");
+    gmsh::model::addDiscreteEntity(2, 1);
+    std::vector<double> xyz;
+    for(int k = 0; k < 8; k++)
+      for(int d = 0; d < 3; d++) xyz.push_back(side * ((k >> d) & 1));
+    gmsh::model::mesh::addNodes(2, 1, {1, 2, 3, 4, 5, 6, 7, 8}, xyz);
+    // each face as two triangles, outward
+    const std::vector<std::size_t> corners = {
+      1, 3, 4, 1, 4, 2, 5, 6, 8, 5, 8, 7, 1, 2, 6, 1, 6, 5,
+      3, 7, 8, 3, 8, 4, 1, 5, 7, 1, 7, 3, 2, 4, 8, 2, 8, 6};
+    std::vector<std::size_t> tags;
+    for(std::size_t t = 0; t < corners.size() / 3; t++) tags.push_back(t + 1);
+    gmsh::model::mesh::addElementsByType(1, 2, tags, corners);
+    gmsh::model::mesh::classifySurfaces(40. * M_PI / 180., true, true, M_PI);
+    gmsh::model::mesh::createGeometry();
+  }
+
+  std::size_t meshTriangles()
+  {
+    std::size_t n = 0;
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t> > elements, nodes;
+    gmsh::model::mesh::getElements(types, elements, nodes, 2);
+    for(std::size_t i = 0; i < types.size(); i++)
+      if(types[i] == 2) n += elements[i].size();
+    return n;
+  }
+
+} // namespace
+
+namespace {
+
+  // The errors for the curves refused and the warnings for the surfaces on
+  // them that one Mesh 2 logs
+  std::pair<int, int> refusedByMesh2()
+  {
+    gmsh::logger::start();
+    gmsh::model::mesh::generate(2);
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    gmsh::logger::stop();
+    std::pair<int, int> n(0, 0);
+    for(const std::string &l : log) {
+      n.first +=
+        l.find("segments (length") != std::string::npos && l.find("Error") == 0;
+      n.second += l.find("not meshed: its curve") != std::string::npos &&
+                  l.find("Warning") == 0;
+    }
+    return n;
+  }
+
+} // namespace
+
+TEST(reparamSizeGrading, aModelFarLargerThanTheSizeIsAnErrorNotAHang)
+{
+  // coordinates of 1e30 with the points' default size of 1e22: 1e8
+  // segments on each edge, refused; the faces on them are not meshed
+  // either (MeshAdapt refined one towards that size for hours)
+  classifiedCube(1e30);
+  EXPECT_EQ(refusedByMesh2(), std::make_pair(12, 6));
+  EXPECT_EQ(meshTriangles(), 0u);
+  // a size far below a unit cube's: the same; at its scale, every face is
+  // meshed again (its curves first)
+  classifiedCube(1.);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e-8);
+  EXPECT_EQ(refusedByMesh2(), std::make_pair(12, 6));
+  EXPECT_EQ(meshTriangles(), 0u);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.2);
+  gmsh::model::mesh::generate(1);
+  gmsh::model::mesh::generate(2);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  EXPECT_GT(meshTriangles(), 6u * 20u);
+}
