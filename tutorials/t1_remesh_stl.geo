@@ -16,9 +16,9 @@
 // mapping (Mesh.CompoundFillHoles) and stay holes in the new mesh.
 //
 // After the planar mesher, the new mesh is optimized on the input
-// (Mesh.CompoundOptimize: input nodes it cuts off inserted, long edges split,
-// flips and node moves around its poor triangles; 2 also collapses short
-// edges).
+// (Mesh.CompoundOptimize: input nodes it cuts off inserted, long edges split
+// and short ones collapsed, flips and node moves around its poor triangles;
+// 1 leaves the short edges).
 //
 // The log has one "Reparam:" line per parametrization (stage times), one per
 // meshed surface (triangles, kappa min and mean) and one on the optimization
@@ -31,7 +31,7 @@ DefineConstant[
                                 6 = "Automatic"},
                      Name "Reparam/Parametrization"}
   FillHoles = {1, Choices{0, 1}, Name "Reparam/Fill holes"}
-  Optimize = {1, Choices{0 = "None", 1 = "On the input",
+  Optimize = {2, Choices{0 = "None", 1 = "On the input, no collapse",
                          2 = "On the input, short edges collapsed"},
               Name "Reparam/Optimize"}
   Size = {0.05, Min 0.005, Max 0.5, Step 0.005,
