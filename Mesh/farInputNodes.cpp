@@ -34,6 +34,15 @@ namespace {
     SPoint3 onMesh;
   };
 
+  double meanEdge(const optimizableMesh &m, int triangle)
+  {
+    const std::array<int, 3> &t = m.triangles[triangle];
+    return (m.points[t[0]].distance(m.points[t[1]]) +
+            m.points[t[1]].distance(m.points[t[2]]) +
+            m.points[t[2]].distance(m.points[t[0]])) /
+           3.;
+  }
+
   std::vector<farNode> farInputNodes(const optimizableMesh &m,
                                      const surfaceMesh &input, double share)
   {
@@ -44,12 +53,7 @@ namespace {
       if(boundary[i]) continue;
       const closestTriangleHit hit = onMesh.closest(input.points[i]);
       if(hit.triangle < 0) continue;
-      const std::array<int, 3> &t = m.triangles[hit.triangle];
-      const double edges = (m.points[t[0]].distance(m.points[t[1]]) +
-                            m.points[t[1]].distance(m.points[t[2]]) +
-                            m.points[t[2]].distance(m.points[t[0]])) /
-                           3.;
-      if(hit.distance > share * edges)
+      if(hit.distance > share * meanEdge(m, hit.triangle))
         far.push_back({hit.distance, (int)i, hit.triangle, hit.point});
     }
     std::sort(far.begin(), far.end(), [](const farNode &a, const farNode &b) {
@@ -71,12 +75,8 @@ namespace {
   {
     const std::array<int, 3> &c = m.triangles[f.triangle];
     const SPoint3 &x = input.points[f.node];
-    const double edges = (m.points[c[0]].distance(m.points[c[1]]) +
-                          m.points[c[1]].distance(m.points[c[2]]) +
-                          m.points[c[2]].distance(m.points[c[0]])) /
-                         3.;
     int nearest = -1;
-    double d = snapShare * edges;
+    double d = snapShare * meanEdge(m, f.triangle);
     for(int v : c)
       if(m.points[v].distance(x) < d) {
         d = m.points[v].distance(x);
