@@ -23,8 +23,10 @@ packages=(build-essential cmake ccache pkg-config dpkg-dev
   # Debian's gmsh source links these even without the GUI (its patch
   # 30_delete_gl2ps_from_source)
   libgl2ps-dev libgl-dev freeglut3-dev
-  # libFuzzer for scripts/fuzz.sh and its CTest (skipped without it)
-  clang)
+  # libFuzzer for scripts/fuzz.sh and its CTest (skipped without it): clang
+  # only recommends its runtimes (libFuzzer, the sanitizers), which
+  # --no-install-recommends below would leave out
+  clang libclang-rt-dev)
 if [ "${REPARAM_GUI:-OFF}" = "ON" ]; then
   packages+=(libfltk1.3-dev libgl2ps-dev libglu1-mesa-dev libxft-dev
     libxinerama-dev libxcursor-dev libxfixes-dev)
