@@ -2,7 +2,9 @@
 
 #include "reparamCreaseCurves.h"
 #include "reparamFaceMeshing.h"
+#include "reparamReport.h"
 #include "reparamSizeGrading.h"
+#include "GFace.h"
 
 void reparamBeginFaceMeshing(GFace *gf)
 {
@@ -14,4 +16,10 @@ void reparamEndFaceMeshing(GFace *gf)
 {
   reparamEndSizeGrading(gf);
   reparamRestoreCreaseCurves(gf);
+}
+
+bool reparamRecombineWithParametrization(GFace *gf)
+{
+  const parametrizationRecord *record = findParametrization(gf);
+  return record && record->map > 0 && gf->haveParametrization();
 }

@@ -4,7 +4,8 @@
 // takes down after (hook in discreteFace::mesh, patches/0014): the sizes of
 // its curves graded into it (Geo/reparamSizeGrading.h), and for a face
 // recombined into quadrangles its crease curves taken out
-// (Geo/reparamCreaseCurves.h).
+// (Geo/reparamCreaseCurves.h). Also whether Gmsh's recombination may use
+// the face's parametrization (hook in recombineIntoQuads, patches/0015).
 
 #ifndef REPARAM_FACE_MESHING_H
 #define REPARAM_FACE_MESHING_H
@@ -13,5 +14,12 @@ class GFace;
 
 void reparamBeginFaceMeshing(GFace *gf);
 void reparamEndFaceMeshing(GFace *gf);
+
+// Whether the quadrangles Blossom made on a discrete face may be smoothed
+// and cleaned in its (u, v) plane, as on a CAD face: Gmsh skips that on
+// every discrete face, which had no parametrization it could trust; one
+// that Reparam parametrized (Mesh.CompoundParametrization > 0) has a
+// one-to-one map. Gmsh's own map keeps Gmsh's behaviour (the reference).
+bool reparamRecombineWithParametrization(GFace *gf);
 
 #endif
