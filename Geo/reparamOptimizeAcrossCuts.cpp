@@ -22,6 +22,7 @@
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
 #include "reparamSlideCurveNodes.h"
+#include "reparamSmoothQuads.h"
 
 namespace {
 
@@ -441,5 +442,7 @@ int reparamOptimizeMeshedModel(GModel *m)
     if(!alreadyOptimized(g)) changed += optimizeGroup(g);
   // then the nodes of the curves no optimizer moved
   if(reparamSlideCurveNodes(m)) changed++;
+  // and the faces recombined into quadrangles
+  changed += reparamSmoothQuadMeshes(m);
   return changed;
 }

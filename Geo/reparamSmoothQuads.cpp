@@ -1,0 +1,233 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+#include "GEdge.h"
+#include "GFace.h"
+#include "GModel.h"
+#include "GmshMessage.h"
+#include "MElement.h"
+#include "MLine.h"
+#include "MQuadrangle.h"
+#include "MTriangle.h"
+#include "MVertex.h"
+#include "OS.h"
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+#include "quadNodeSmoothing.h"
+#include "reparamCurveMesh.h"
+#include "reparamFaceMeshing.h"
+#include "reparamReport.h"
+#include "reparamSmoothQuads.h"
+
+namespace {
+
+  struct quadGroup {
+    std::vector<GFace *> faces;
+    std::vector<GEdge *> cuts;
+  };
+
+  int rootOf(std::vector<int> &parent, int i)
+  {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+
+  // The faces with quadrangles Reparam parametrized, joined by the smooth
+  // cut curves between two of them (a face without such a cut alone)
+  std::vector<quadGroup> quadGroupsOf(GModel *m)
+  {
+    std::vector<GFace *> faces;
+    std::map<GFace *, int> index;
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it)
+      if(!(*it)->quadrangles.empty() &&
+         reparamRecombineWithParametrization(*it)) {
+        index[*it] = (int)faces.size();
+        faces.push_back(*it);
+      }
+    std::vector<int> parent(faces.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<GEdge *> cuts;
+    for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
+      const std::vector<GFace *> sides = (*it)->faces();
+      if(sides.size() != 2 || !index.count(sides[0]) ||
+         !index.count(sides[1]) || !reparamIsCrossableCurve(*it))
+        continue;
+      cuts.push_back(*it);
+      parent[rootOf(parent, index[sides[0]])] = rootOf(parent, index[sides[1]]);
+    }
+    std::map<int, quadGroup> groups;
+    for(std::size_t f = 0; f < faces.size(); f++)
+      groups[rootOf(parent, (int)f)].faces.push_back(faces[f]);
+    for(GEdge *ge : cuts)
+      groups[rootOf(parent, index[ge->faces()[0]])].cuts.push_back(ge);
+    std::vector<quadGroup> list;
+    for(auto &g : groups) list.push_back(g.second);
+    return list;
+  }
+
+  // The group's elements as one mesh; nodes[i]: point i's node
+  surfaceMesh meshOfGroup(const quadGroup &g, std::vector<MVertex *> &nodes)
+  {
+    surfaceMesh m;
+    std::map<MVertex *, int> index;
+    auto indexOf = [&](MVertex *v) {
+      auto it = index.find(v);
+      if(it != index.end()) return it->second;
+      index[v] = (int)nodes.size();
+      nodes.push_back(v);
+      m.points.push_back(v->point());
+      return (int)nodes.size() - 1;
+    };
+    for(GFace *gf : g.faces) {
+      for(MTriangle *t : gf->triangles)
+        m.triangles.push_back(
+          {{indexOf(t->getVertex(0)), indexOf(t->getVertex(1)),
+            indexOf(t->getVertex(2))}});
+      for(MQuadrangle *q : gf->quadrangles)
+        m.quadrangles.push_back(
+          {{indexOf(q->getVertex(0)), indexOf(q->getVertex(1)),
+            indexOf(q->getVertex(2)), indexOf(q->getVertex(3))}});
+    }
+    return m;
+  }
+
+  // The meshes this left, per face (element count and first element): a
+  // second call (another Mesh.CompoundOptimize pass over the model) leaves
+  // them as they are
+  std::map<const GFace *, std::pair<std::size_t, const MElement *> > &
+  smoothedMeshes()
+  {
+    static std::map<const GFace *, std::pair<std::size_t, const MElement *> >
+      meshes;
+    return meshes;
+  }
+
+  std::pair<std::size_t, const MElement *> meshMark(GFace *gf)
+  {
+    const std::size_t n = gf->getNumMeshElements();
+    return std::make_pair(n, n ? gf->getMeshElement(0) : nullptr);
+  }
+
+  bool alreadySmoothed(const quadGroup &g)
+  {
+    for(GFace *gf : g.faces) {
+      auto it = smoothedMeshes().find(gf);
+      if(it == smoothedMeshes().end() || it->second != meshMark(gf))
+        return false;
+    }
+    return true;
+  }
+
+  std::string tagList(const std::vector<GFace *> &faces)
+  {
+    std::string list;
+    for(GFace *gf : faces)
+      list += (list.empty() ? "" : ", ") + std::to_string(gf->tag());
+    return list;
+  }
+
+  // Writes the moved points back: a face node goes to the face whose input
+  // it landed on, a cut node moved off its cut is replaced by a new node of
+  // that face (and the cut keeps no 1D element). Returns the cuts crossed
+  std::size_t writeBack(const quadGroup &g, const surfaceMesh &m,
+                        const std::vector<MVertex *> &nodes,
+                        const std::vector<int> &landing,
+                        const std::vector<int> &inputFace)
+  {
+    std::map<MVertex *, MVertex *> replaced;
+    std::set<GEdge *> crossed;
+    for(std::size_t i = 0; i < nodes.size(); i++) {
+      if(landing[i] < 0) continue;
+      MVertex *v = nodes[i];
+      const SPoint3 &p = m.points[i];
+      GFace *gf = g.faces[inputFace[landing[i]]];
+      const SPoint2 uv = gf->parFromPoint(p);
+      GEntity *old = v->onWhat();
+      if(old->dim() == 2) {
+        if(old != gf) {
+          std::vector<MVertex *> &own = old->mesh_vertices;
+          own.erase(std::remove(own.begin(), own.end(), v), own.end());
+          v->setEntity(gf);
+          gf->mesh_vertices.push_back(v);
+        }
+        v->setXYZ(p.x(), p.y(), p.z());
+        v->setParameter(0, uv.x());
+        v->setParameter(1, uv.y());
+        continue;
+      }
+      MVertex *nv = new MFaceVertex(p.x(), p.y(), p.z(), gf, uv.x(), uv.y());
+      gf->mesh_vertices.push_back(nv);
+      replaced[v] = nv;
+      crossed.insert((GEdge *)old);
+      std::vector<MVertex *> &own = old->mesh_vertices;
+      own.erase(std::remove(own.begin(), own.end(), v), own.end());
+    }
+    for(GFace *gf : g.faces)
+      for(std::size_t e = 0; e < gf->getNumMeshElements(); e++) {
+        MElement *el = gf->getMeshElement(e);
+        for(std::size_t k = 0; k < el->getNumVertices(); k++) {
+          auto it = replaced.find(el->getVertex(k));
+          if(it != replaced.end()) el->setVertex(k, it->second);
+        }
+      }
+    for(GEdge *ge : crossed) {
+      for(MLine *l : ge->lines) delete l;
+      ge->lines.clear();
+      ge->deleteVertexArrays();
+    }
+    for(auto &r : replaced) delete r.first;
+    return crossed.size();
+  }
+
+  bool smoothGroup(const quadGroup &g)
+  {
+    const double t0 = TimeOfDay();
+    std::vector<surfaceMesh> inputs;
+    for(GFace *gf : g.faces) inputs.push_back(inputTriangulationOf(gf));
+    std::vector<int> inputFace;
+    const surfaceMesh input = unionAsTriangles(inputs, nullptr, &inputFace);
+    const closestTriangleSearch onInput(input.points, input.triangles);
+    std::vector<MVertex *> nodes;
+    surfaceMesh m = meshOfGroup(g, nodes);
+    const std::set<GFace *> faces(g.faces.begin(), g.faces.end());
+    const std::set<GEdge *> cuts(g.cuts.begin(), g.cuts.end());
+    std::vector<bool> movable(nodes.size());
+    for(std::size_t i = 0; i < nodes.size(); i++) {
+      GEntity *e = nodes[i]->onWhat();
+      movable[i] = (e->dim() == 2 && faces.count((GFace *)e)) ||
+                   (e->dim() == 1 && cuts.count((GEdge *)e));
+    }
+    std::vector<int> landing;
+    const quadSmoothingResult r =
+      smoothQuadsOnInput(m, movable, onInput, landing);
+    for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
+    if(!r.moves) return false;
+    const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
+    for(GFace *gf : g.faces) {
+      gf->deleteVertexArrays();
+      const faceReport *report = findFaceReport(gf);
+      reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
+    }
+    Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
+              "(%lu node moves in %d sweeps, %lu of %lu cut curves crossed): "
+              "eta min %.3g -> %.3g, mean %.3g -> %.3g (%g s)",
+              g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), r.moves,
+              r.sweeps, crossed, g.cuts.size(), r.etaMinBefore, r.etaMinAfter,
+              r.etaMeanBefore, r.etaMeanAfter, TimeOfDay() - t0);
+    return true;
+  }
+
+} // namespace
+
+int reparamSmoothQuadMeshes(GModel *m)
+{
+  int changed = 0;
+  for(const quadGroup &g : quadGroupsOf(m))
+    if(!alreadySmoothed(g)) changed += smoothGroup(g);
+  if(changed) m->destroyMeshCaches();
+  return changed;
+}

@@ -1,0 +1,19 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The quadrangles of the faces Reparam parametrized, squared up on their
+// input after the 2D mesh (Mesh.CompoundOptimize; from
+// reparamOptimizeMeshedModel, Geo/reparamOptimizeAcrossCuts.h): the faces a
+// patch was cut into together, the nodes of their smooth cut curves moving
+// across the cuts (Mesh/quadNodeSmoothing.h). A cut node moved off its cut
+// becomes a node of the face whose input it lands on, and the cut keeps no
+// 1D element; the elements stay in their faces.
+
+#ifndef REPARAM_SMOOTH_QUADS_H
+#define REPARAM_SMOOTH_QUADS_H
+
+class GModel;
+
+// Returns the number of groups of faces changed (logged, reports updated)
+int reparamSmoothQuadMeshes(GModel *m);
+
+#endif

@@ -1,0 +1,153 @@
+// Reparam - node moves that square up quadrangles on the input surface:
+// a node pushed off a grid goes back, a zig-zag row of movable nodes is
+// straightened, fixed nodes stay, no quadrangle turns over nor gets worse
+// than the worst around it, every node stays on the input
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include "SVector3.h"
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+#include "quadNodeSmoothing.h"
+#include "quadQuality.h"
+#include "testPatches.h"
+
+namespace {
+
+  // n x n unit-square quadrangles over [0, n]^2 (z = 0), corners
+  // counterclockwise; point (i, j) is i + (n + 1) j
+  surfaceMesh quadGrid(int n)
+  {
+    surfaceMesh m;
+    for(int j = 0; j <= n; j++)
+      for(int i = 0; i <= n; i++) m.points.push_back(SPoint3(i, j, 0.));
+    for(int j = 0; j < n; j++)
+      for(int i = 0; i < n; i++) {
+        const int a = i + (n + 1) * j;
+        m.quadrangles.push_back({{a, a + 1, a + n + 2, a + n + 1}});
+      }
+    return m;
+  }
+
+  std::vector<bool> innerNodes(int n)
+  {
+    std::vector<bool> movable((n + 1) * (n + 1), false);
+    for(int j = 1; j < n; j++)
+      for(int i = 1; i < n; i++) movable[i + (n + 1) * j] = true;
+    return movable;
+  }
+
+  double etaOf(const surfaceMesh &m, const std::array<int, 4> &q)
+  {
+    return quadEta(m.points[q[0]], m.points[q[1]], m.points[q[2]],
+                   m.points[q[3]]);
+  }
+
+  SVector3 normalOf(const surfaceMesh &m, const std::array<int, 4> &q)
+  {
+    return crossprod(SVector3(m.points[q[0]], m.points[q[2]]),
+                     SVector3(m.points[q[1]], m.points[q[3]]));
+  }
+
+  // A pseudo-random number in [-1, 1]
+  double noise(unsigned i, unsigned salt)
+  {
+    unsigned h = 2654435761u * (i + 104729u * salt);
+    h ^= h >> 13;
+    h *= 2246822519u;
+    h ^= h >> 16;
+    return 2. * (h % 10000) / 9999. - 1.;
+  }
+
+} // namespace
+
+TEST(quadNodeSmoothing, aNodePushedOffTheGridGoesBack)
+{
+  const int n = 4;
+  surfaceMesh m = quadGrid(n);
+  const int centre = 2 + (n + 1) * 2;
+  m.points[centre] = SPoint3(2.3, 2.2, 0.);
+  // the input: the plane, finer than the quadrangles
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(16, 16, 4., 4.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  std::vector<int> landing;
+  const quadSmoothingResult r =
+    smoothQuadsOnInput(m, innerNodes(n), onInput, landing);
+  EXPECT_LT(r.etaMinBefore, 0.9); // 0.796
+  EXPECT_GT(r.etaMinAfter, 0.98);
+  EXPECT_GT(r.etaMeanAfter, r.etaMeanBefore);
+  EXPECT_GE(landing[centre], 0);
+  EXPECT_NEAR(m.points[centre].x(), 2., 0.05);
+  EXPECT_NEAR(m.points[centre].y(), 2., 0.05);
+  EXPECT_EQ(m.points[centre].z(), 0.);
+  // the grid's other nodes were square already: not moved
+  for(std::size_t i = 0; i < m.points.size(); i++)
+    if((int)i != centre) EXPECT_EQ(landing[i], -1) << i;
+}
+
+TEST(quadNodeSmoothing, aZigZagRowOfMovableNodesIsStraightened)
+{
+  // the middle row zig-zags by a third of a cell, as the nodes of a cut
+  // along the input's edges
+  const int n = 6;
+  surfaceMesh m = quadGrid(n);
+  for(int i = 1; i < n; i++)
+    m.points[i + (n + 1) * 3] = SPoint3(i, 3. + (i % 2 ? 0.33 : -0.33), 0.);
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(12, 12, 6., 6.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  std::vector<int> landing;
+
+  // the row fixed (a feature curve): nothing to gain around it
+  std::vector<bool> fixedRow = innerNodes(n);
+  for(int i = 1; i < n; i++) fixedRow[i + (n + 1) * 3] = false;
+  surfaceMesh kept = m;
+  smoothQuadsOnInput(kept, fixedRow, onInput, landing);
+  for(int i = 1; i < n; i++) EXPECT_EQ(landing[i + (n + 1) * 3], -1);
+
+  // the row movable (a cut): straightened
+  const quadSmoothingResult r =
+    smoothQuadsOnInput(m, innerNodes(n), onInput, landing);
+  EXPECT_LT(r.etaMinBefore, 0.7); // 0.59
+  EXPECT_GT(r.etaMinAfter, 0.9);
+  for(int i = 1; i < n; i++)
+    EXPECT_NEAR(m.points[i + (n + 1) * 3].y(), 3., 0.15) << i;
+}
+
+TEST(quadNodeSmoothing, neverWorseNorTurnedAndOnACurvedInput)
+{
+  // a quadrangle grid on the unit cylinder x^2 + z^2 = 1 (angle i / 8 of
+  // a radian around, j / 4 along), its inner nodes moved at random along
+  // the surface by up to 0.3 cells; the input: the cylinder, finer
+  const int n = 8;
+  surfaceMesh m = quadGrid(n);
+  for(std::size_t i = 0; i < m.points.size(); i++) {
+    const int a = (int)i % (n + 1), b = (int)i / (n + 1);
+    const bool inner = a > 0 && a < n && b > 0 && b < n;
+    const double t = (a + (inner ? 0.3 * noise(i, 0) : 0.)) / 8.;
+    const double y = (b + (inner ? 0.3 * noise(i, 1) : 0.)) / 8.;
+    m.points[i] = SPoint3(std::sin(t), y, std::cos(t));
+  }
+  testTriangulation fine = rectangleGrid(64, 64, 1., 1.);
+  for(SPoint3 &p : fine.points)
+    p = SPoint3(std::sin(p.x()), p.y(), std::cos(p.x()));
+  const surfaceMesh input = asSurfaceMesh(fine);
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  std::vector<SVector3> normals;
+  for(const auto &q : m.quadrangles) normals.push_back(normalOf(m, q));
+  std::vector<int> landing;
+  const quadSmoothingResult r =
+    smoothQuadsOnInput(m, innerNodes(n), onInput, landing);
+  EXPECT_GT(r.moves, 20u);
+  EXPECT_GE(r.etaMinAfter, r.etaMinBefore);
+  EXPECT_GT(r.etaMeanAfter, r.etaMeanBefore + 0.02);
+  for(std::size_t q = 0; q < m.quadrangles.size(); q++)
+    EXPECT_GT(dot(normalOf(m, m.quadrangles[q]), normals[q]), 0.) << q;
+  // on the input: the polyhedron's points are within its sag of the
+  // cylinder, (1/64)^2 / 8 of a radian cell
+  for(std::size_t i = 0; i < m.points.size(); i++) {
+    if(landing[i] < 0) continue;
+    const double r2 = std::hypot(m.points[i].x(), m.points[i].z());
+    EXPECT_NEAR(r2, 1., 5e-5) << i;
+    EXPECT_LT(onInput.closest(m.points[i]).distance, 1e-12) << i;
+  }
+}
