@@ -7,6 +7,7 @@
 #include "BackgroundMeshTools.h"
 #include "Context.h"
 #include "GEdge.h"
+#include "GFace.h"
 #include "GModel.h"
 #include "GVertex.h"
 #include "GmshMessage.h"
@@ -158,6 +159,19 @@ bool reparamIsCrossableCurve(GEdge *ge)
 
 namespace {
 
+  // Whether Gmsh's 1D mesher would give the curve an even number of
+  // segments: Blossom recombines a face of its into quadrangles
+  // (meshGEdge.cpp's rule)
+  bool evenForBlossom(GEdge *ge)
+  {
+    if(!CTX::instance()->mesh.algoRecombine || ge->faces().empty())
+      return false;
+    if(CTX::instance()->mesh.recombineAll) return true;
+    for(GFace *gf : ge->faces())
+      if(gf->meshAttributes.recombine) return true;
+    return false;
+  }
+
   // The nodes spread by the sizes graded from the ends of the short curves
   // (Geo/reparamSizeGrading.h), where they are smaller than Gmsh's
   void gradeCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
@@ -181,7 +195,7 @@ namespace {
       [&](const SPoint3 &x, double t) {
         return reparamGradedCurveSize(ge, x, gmshSize(x, t));
       },
-      fewest);
+      fewest, evenForBlossom(ge));
     const std::size_t before = nodes.size();
     moveNodes(ge, params, nodes);
     Msg::Debug("Reparam: curve %d: sizes graded from the short curves' ends "

@@ -27,7 +27,9 @@ std::size_t countElementsAgainstFaceNormals(GFace *gf);
 // the other planar mesher (Geo/reparamMesherFallback.h), then the input's
 // own triangles (Geo/reparamInputMesh.h); true if at most 1 % of the
 // elements fail Gmsh's test: the mesh is kept (logged). A mesh with edges
-// longer than twice the size (countLongEdges) is compared with MeshAdapt's
+// longer than twice the size (countLongEdges) is compared with MeshAdapt's.
+// A quadrangle mesh (Blossom's) is kept when at most 1 % of its elements
+// point against the input
 bool reparamKeepPlanarMesh(GFace *gf);
 
 // The segments of gf's curves its triangles use fewer times than the curve

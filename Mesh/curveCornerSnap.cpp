@@ -126,6 +126,30 @@ namespace {
     return n;
   }
 
+  // Whole numbers of segments for pieces with these shares of `total`: at
+  // least one each, the rest by the largest remainders, so that the curve
+  // keeps its count (or, where the pieces are more than the segments, its
+  // parity): Gmsh gives a curve of a face Blossom recombines an even count,
+  // and an odd one leaves the face with an odd number of triangles, which
+  // Blossom cannot pair (camelhead's border curves)
+  std::vector<int> apportionSegments(const std::vector<double> &share,
+                                     int total)
+  {
+    std::vector<int> n(share.size());
+    std::vector<std::pair<double, std::size_t> > remainders;
+    int sum = 0;
+    for(std::size_t k = 0; k < share.size(); k++) {
+      n[k] = std::max(1, (int)std::floor(share[k]));
+      sum += n[k];
+      remainders.push_back(std::make_pair(n[k] - share[k], k));
+    }
+    std::sort(remainders.begin(), remainders.end());
+    for(std::size_t i = 0; sum < total && i < remainders.size(); i++, sum++)
+      n[remainders[i].second]++;
+    if((sum - total) % 2) n[remainders.front().second]++;
+    return n;
+  }
+
 } // namespace
 
 std::vector<double> snapCurveNodesToCorners(
@@ -144,11 +168,16 @@ std::vector<double> snapCurveNodesToCorners(
   std::vector<double> ends = {params.front()};
   for(int c : corners) ends.push_back(c);
   ends.push_back(params.back());
+  std::vector<double> share;
+  for(std::size_t k = 0; k + 1 < ends.size(); k++)
+    share.push_back(
+      segmentsBetween(arc, params, arc.of(ends[k]), arc.of(ends[k + 1])));
+  const std::vector<int> counts =
+    apportionSegments(share, (int)params.size() - 1);
   std::vector<double> snapped = {params.front()};
   for(std::size_t k = 0; k + 1 < ends.size(); k++) {
     const double a = arc.of(ends[k]), b = arc.of(ends[k + 1]);
-    const int n =
-      std::max(1, (int)std::lround(segmentsBetween(arc, params, a, b)));
+    const int n = counts[k];
     for(int i = 1; i < n; i++)
       snapped.push_back(arc.parameter(a + (b - a) * i / n));
     snapped.push_back(ends[k + 1]);

@@ -21,7 +21,8 @@
 // degrees or more seen at half a segment's length, not edge by edge; the
 // sharpest of each segment, none within half a segment of the ends or of a
 // sharper one) become nodes, and each piece between them is meshed evenly
-// with as many segments as it had (at least one). Without a corner, params
+// with its share of the segments (at least one; the curve keeps its count
+// of segments, or at least its parity). Without a corner, params
 // as they are. `allowed`, when given, says which input nodes may be taken
 // (not one another curve took: two nodes there would make a degenerate
 // triangle); `corners` gets the ones taken.

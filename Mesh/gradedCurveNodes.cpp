@@ -6,7 +6,8 @@
 
 std::vector<double> gradedCurveParameters(
   const std::vector<SPoint3> &polyline,
-  const std::function<double(const SPoint3 &, double)> &size, int fewest)
+  const std::function<double(const SPoint3 &, double)> &size, int fewest,
+  bool even)
 {
   // the running integral of 1 / size at the ends of small pieces
   std::vector<double> t = {0.}, integral = {0.};
@@ -27,7 +28,8 @@ std::vector<double> gradedCurveParameters(
     }
   }
   const double total = integral.back();
-  const int segments = std::max(fewest, (int)std::lround(total));
+  int segments = std::max(fewest, (int)std::lround(total));
+  if(even && segments % 2) segments++;
   std::vector<double> params = {0.};
   std::size_t j = 0;
   for(int n = 1; n < segments; n++) {

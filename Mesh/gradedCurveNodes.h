@@ -17,9 +17,13 @@
 // The parameters (polyline node i at i) of the ends and the nodes of a 1D
 // mesh of the polyline whose segments follow size(x, t) (t: x's
 // parameter): as many segments as
-// the integral of 1 / size rounded, at least `fewest`, at equal steps of it
+// the integral of 1 / size rounded, at least `fewest`, at equal steps of it;
+// `even`: an even number of segments (a curve of a face recombined by
+// Blossom, which pairs all the face's triangles only if its boundary has
+// an even number of segments; Gmsh's 1D mesher does the same)
 std::vector<double> gradedCurveParameters(
   const std::vector<SPoint3> &polyline,
-  const std::function<double(const SPoint3 &, double)> &size, int fewest);
+  const std::function<double(const SPoint3 &, double)> &size, int fewest,
+  bool even = false);
 
 #endif

@@ -125,8 +125,8 @@ TEST(curveCornerSnap, recipeMeshKeepsTheCornersOfAnLShapedPlate)
   testTriangulation plate;
   std::map<int, int> index;
   for(const auto &t : grid.triangles) {
-    SPoint3 g = (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) *
-                (1. / 3.);
+    SPoint3 g =
+      (grid.points[t[0]] + grid.points[t[1]] + grid.points[t[2]]) * (1. / 3.);
     if(g.x() > 0.5 && g.y() > 0.5) continue;
     std::array<int, 3> kept;
     for(int j = 0; j < 3; j++) {
@@ -159,4 +159,16 @@ TEST(curveCornerSnap, recipeMeshKeepsTheCornersOfAnLShapedPlate)
   remeshWithRecipe(plate, 0.13);
   for(const SPoint3 &c : corners)
     EXPECT_EQ(meshNodesAt(c), 1) << c.x() << " " << c.y();
+}
+
+TEST(curveCornerSnap, theCurveKeepsItsCountOfSegments)
+{
+  // 5 segments of 4, the corner at 10 halfway: 2.5 segments on each side,
+  // rounded to 3 and 3 the curve had 6, an even count from an odd one (a
+  // face Blossom recombines then has an odd number of triangles); now 3
+  // and 2
+  const std::vector<double> snapped =
+    snapCurveNodesToCorners(lShape(), {0., 4., 8., 12., 16., 20.});
+  ASSERT_EQ(snapped.size(), 6u);
+  EXPECT_EQ(snapped[3], 10.);
 }

@@ -61,3 +61,21 @@ TEST(gradedCurveNodes, atLeastTheFewestSegments)
   ASSERT_EQ(t.size(), 3u);
   EXPECT_NEAR(t[1], 0.5, 1e-9);
 }
+
+TEST(gradedCurveNodes, evenForBlossom)
+{
+  // 9 segments of 1/9; a curve of a face Blossom recombines gets 10 (Gmsh's
+  // rule: its boundary must have an even number of segments)
+  const std::vector<SPoint3> p = line(7);
+  auto ninth = [](const SPoint3 &, double) { return 1. / 9.; };
+  EXPECT_EQ(gradedCurveParameters(p, ninth, 1).size(), 10u);
+  const std::vector<double> t = gradedCurveParameters(p, ninth, 1, true);
+  ASSERT_EQ(t.size(), 11u);
+  for(std::size_t i = 0; i + 1 < t.size(); i++)
+    EXPECT_NEAR(xAt(p, t[i + 1]) - xAt(p, t[i]), 0.1, 1e-9) << i;
+  // and at least 3 becomes 4
+  EXPECT_EQ(gradedCurveParameters(
+              line(1), [](const SPoint3 &, double) { return 10.; }, 3, true)
+              .size(),
+            5u);
+}
