@@ -1,6 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include "reparamCreaseCurves.h"
+#include "reparamCurvatureMetric.h"
 #include "reparamFaceMeshing.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
@@ -48,10 +49,12 @@ void reparamBeginFaceMeshing(GFace *gf)
   reparamHideCreaseCurvesFromQuads(gf);
   reparamBeginSizeGrading(gf);
   useSmoothCrossField(gf);
+  reparamBeginAnisotropicMeshing(gf);
 }
 
 void reparamEndFaceMeshing(GFace *gf)
 {
+  reparamEndAnisotropicMeshing();
   restoreCrossField();
   reparamEndSizeGrading(gf);
   reparamRestoreCreaseCurves(gf);

@@ -11,6 +11,7 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "reparamInputMesh.h"
+#include "reparamCurvatureMetric.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamReport.h"
 
@@ -75,7 +76,8 @@ bool reparamOptimizableFace(const GFace *gf)
   const parametrizationRecord *map = findParametrization(gf);
   return map && map->map > 0 && gf->geomType() == GEntity::DiscreteSurface &&
          !gf->triangles.empty() && gf->quadrangles.empty() &&
-         !gf->stl_triangles.empty() && !keptAsInput(gf);
+         !gf->stl_triangles.empty() && !keptAsInput(gf) &&
+         !reparamAnisotropicFace(gf);
 }
 
 bool meshReversedOnInput(const GFace *gf, const surfaceMesh &input,

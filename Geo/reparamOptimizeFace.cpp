@@ -13,6 +13,7 @@
 #include "reparamCurveMesh.h"
 #include "reparamInputMesh.h"
 #include "reparamOptimizableMesh.h"
+#include "reparamCurvatureMetric.h"
 #include "reparamOptimizeFace.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
@@ -115,7 +116,7 @@ bool reparamOptimizeMeshedFace(GFace *gf)
      gf->geomType() != GEntity::DiscreteSurface || gf->triangles.empty() ||
      !gf->quadrangles.empty() || gf->stl_triangles.empty() ||
      gf->stl_vertices_uv.size() != gf->stl_vertices_xyz.size() ||
-     findOptimization(gf) || keptAsInput(gf))
+     findOptimization(gf) || keptAsInput(gf) || reparamAnisotropicFace(gf))
     return false;
   const double t0 = TimeOfDay();
   // only the face's own nodes move: curves and points stay

@@ -106,6 +106,12 @@ namespace {
 
 } // namespace
 
+double opt_mesh_compound_curvature_metric(OPT_ARGS_NUM)
+{
+  return nonNegativeOption(getReparamOptions().curvatureMetric,
+                           "CompoundCurvatureMetric", action, val);
+}
+
 double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
 {
   return nonNegativeOption(getReparamOptions().noiseSize, "CompoundNoiseSize",

@@ -48,6 +48,10 @@ struct reparamOptions {
   // distance into the face, and along discrete curves the size from the
   // ends of the short curves (Geo/reparamSizeGrading.cpp); 0: Gmsh's sizes
   double meshSizeGradient = 0.5;
+  // Mesh.CompoundCurvatureMetric: N > 0: anisotropic sizes 2 pi R / N along
+  // the principal directions of the input's curvature (BAMG), the smaller
+  // one for the isotropic meshers (Geo/reparamCurvatureMetric.h); 0: off
+  double curvatureMetric = 0.;
   // Mesh.CompoundReport: quality and fidelity lines after meshing
   bool report = true;
   // Mesh.CompoundReportFile: the same report as JSON; empty: none
