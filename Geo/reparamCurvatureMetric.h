@@ -33,7 +33,7 @@ bool reparamCurvatureMetric(GEntity *ge, double u, double x, double y, double z,
 bool reparamAnisotropicFace(const GFace *gf);
 
 // Around the planar mesher of such a face (Geo/reparamFaceMeshing.cpp): the
-// metric is graded on the input by Mesh.SmoothRatio, and BAMG's own
+// metric is graded on the input (by 1.3), and BAMG's own
 // grading, in the (u, v) plane, is off meanwhile
 void reparamBeginAnisotropicMeshing(GFace *gf);
 void reparamEndAnisotropicMeshing();

@@ -23,25 +23,27 @@ MAP_NAMES = {0: "Gmsh (0)", 4: "FE conformal (4)", 5: "spectral (5)",
              6: "automatic (6)"}
 
 
-def recipe(stl, map_value, size, folder):
+def recipe(stl, map_value, size_min, size_max, options, folder):
+    """The STL recipe with these mesh sizes and extra .geo lines."""
     return "\n".join([
         "Mesh.CompoundParametrization = %d;" % map_value,
         'Merge "%s";' % os.path.abspath(stl),
         "ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};",
         "CreateGeometry;",
-        "Mesh.MeshSizeMin = %.9g;" % size,
-        "Mesh.MeshSizeMax = %.9g;" % size,
-        "Mesh.Algorithm = 8;",
-        "Mesh.RecombineAll = 1;",
-        'Mesh.CompoundReportFile = "%s";' % os.path.join(folder, "report.json"),
-        "Mesh 2;", ""])
+        "Mesh.MeshSizeMin = %.9g;" % size_min,
+        "Mesh.MeshSizeMax = %.9g;" % size_max]
+        + options
+        + ['Mesh.CompoundReportFile = "%s";' % os.path.join(folder, "report.json"),
+           "Mesh 2;", ""])
 
 
-def run(gmsh, stl, map_value, size, timeout):
+def run(gmsh, stl, map_value, size_min, size_max, options, timeout):
+    """The report's total line, with the process's CPU time and its count
+    of Error lines; None if gmsh wrote no report (crash, timeout)."""
     with tempfile.TemporaryDirectory() as folder:
-        geo = os.path.join(folder, "quads.geo")
+        geo = os.path.join(folder, "recipe.geo")
         with open(geo, "w") as f:
-            f.write(recipe(stl, map_value, size, folder))
+            f.write(recipe(stl, map_value, size_min, size_max, options, folder))
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         try:
             out = subprocess.run([gmsh, geo, "-parse_and_exit"], cwd=folder,
@@ -59,6 +61,12 @@ def run(gmsh, stl, map_value, size, timeout):
         total["cpu"] = cpu
         total["errors"] = sum(1 for l in out.splitlines() if l.startswith("Error"))
         return total
+
+
+def coverage_size(stl):
+    """The coverage bench's size for this STL."""
+    triangles, area = coverage.read_stl(stl)
+    return coverage.mesh_size(area, len(triangles))
 
 
 def cell(value, form):
@@ -85,10 +93,10 @@ def main():
     print("| mesh | map | quads | tri. (%) | eta min | eta mean | tau (%) | H (%) | inverted | errors | CPU (s) |")
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for stl in a.meshes:
-        triangles, area = coverage.read_stl(stl)
-        size = coverage.mesh_size(area, len(triangles))
+        size = coverage_size(stl)
         for m in maps:
-            t = run(a.gmsh, stl, m, size, a.timeout)
+            t = run(a.gmsh, stl, m, size, size,
+                    ["Mesh.Algorithm = 8;", "Mesh.RecombineAll = 1;"], a.timeout)
             name = os.path.basename(stl)[:-4]
             if t is None:
                 print("| %s | %s | failed |||||||||" % (name, MAP_NAMES.get(m, m)))
