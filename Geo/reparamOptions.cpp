@@ -4,6 +4,7 @@
 #include "GmshMessage.h"
 #include "Options.h"
 #include "reparamOptions.h"
+#include "reparamOptionsWindow.h"
 
 reparamOptions &getReparamOptions()
 {
@@ -38,6 +39,8 @@ double opt_mesh_compound_parametrization(OPT_ARGS_NUM)
     else
       o.parametrization = value;
   }
+  if(action & GMSH_GUI)
+    showInOptionsWindow(compoundWidget::parametrization, o.parametrization);
   return o.parametrization;
 }
 
@@ -48,19 +51,31 @@ static double onOffOption(bool &option, int action, double val)
   return option ? 1. : 0.;
 }
 
+// ... and those the options window shows
+static double onOffOption(bool &option, compoundWidget widget, int action,
+                          double val)
+{
+  const double value = onOffOption(option, action, val);
+  if(action & GMSH_GUI) showInOptionsWindow(widget, value);
+  return value;
+}
+
 double opt_mesh_compound_fill_holes(OPT_ARGS_NUM)
 {
-  return onOffOption(getReparamOptions().fillHoles, action, val);
+  return onOffOption(getReparamOptions().fillHoles, compoundWidget::fillHoles,
+                     action, val);
 }
 
 double opt_mesh_compound_repair(OPT_ARGS_NUM)
 {
-  return onOffOption(getReparamOptions().repair, action, val);
+  return onOffOption(getReparamOptions().repair, compoundWidget::repair, action,
+                     val);
 }
 
 double opt_mesh_compound_split(OPT_ARGS_NUM)
 {
-  return onOffOption(getReparamOptions().split, action, val);
+  return onOffOption(getReparamOptions().split, compoundWidget::split, action,
+                     val);
 }
 
 double opt_mesh_compound_layout(OPT_ARGS_NUM)
@@ -85,6 +100,8 @@ double opt_mesh_compound_optimize(OPT_ARGS_NUM)
     else
       o.optimize = value;
   }
+  if(action & GMSH_GUI)
+    showInOptionsWindow(compoundWidget::optimize, o.optimize);
   return o.optimize;
 }
 
@@ -108,8 +125,12 @@ namespace {
 
 double opt_mesh_compound_curvature_metric(OPT_ARGS_NUM)
 {
-  return nonNegativeOption(getReparamOptions().curvatureMetric,
-                           "CompoundCurvatureMetric", action, val);
+  const double value =
+    nonNegativeOption(getReparamOptions().curvatureMetric,
+                      "CompoundCurvatureMetric", action, val);
+  if(action & GMSH_GUI)
+    showInOptionsWindow(compoundWidget::curvatureMetric, value);
+  return value;
 }
 
 double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
@@ -126,7 +147,8 @@ double opt_mesh_compound_mesh_size_gradient(OPT_ARGS_NUM)
 
 double opt_mesh_compound_report(OPT_ARGS_NUM)
 {
-  return onOffOption(getReparamOptions().report, action, val);
+  return onOffOption(getReparamOptions().report, compoundWidget::report, action,
+                     val);
 }
 
 std::string opt_mesh_compound_report_file(OPT_ARGS_STR)

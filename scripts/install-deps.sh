@@ -29,7 +29,9 @@ packages=(build-essential cmake ccache pkg-config dpkg-dev
   clang libclang-rt-dev)
 if [ "${REPARAM_GUI:-OFF}" = "ON" ]; then
   packages+=(libfltk1.3-dev libgl2ps-dev libglu1-mesa-dev libxft-dev
-    libxinerama-dev libxcursor-dev libxfixes-dev)
+    libxinerama-dev libxcursor-dev libxfixes-dev
+    # the GUI's CTest (label gui) runs Gmsh's window on a virtual display
+    xvfb xauth)
 fi
 
 sudo=""
