@@ -230,8 +230,8 @@ void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
            (it == takenCorners().end() || !takenByAnother(it->second, ge));
   };
   std::vector<int> corners;
-  const std::vector<double> snapped =
-    snapCurveNodesToCorners(polyline, params, allowed, &corners);
+  const std::vector<double> snapped = snapCurveNodesToCorners(
+    polyline, params, allowed, &corners, evenForBlossom(ge));
   for(int i : corners)
     takenCorners()[byCoordinates(polyline[i])] = {ge->model(), ge->tag(), ge};
   if(snapped == params) return;

@@ -129,9 +129,7 @@ namespace {
   // Whole numbers of segments for pieces with these shares of `total`: at
   // least one each, the rest by the largest remainders, so that the curve
   // keeps its count (or, where the pieces are more than the segments, its
-  // parity): Gmsh gives a curve of a face Blossom recombines an even count,
-  // and an odd one leaves the face with an odd number of triangles, which
-  // Blossom cannot pair (camelhead's border curves)
+  // parity)
   std::vector<int> apportionSegments(const std::vector<double> &share,
                                      int total)
   {
@@ -152,9 +150,11 @@ namespace {
 
 } // namespace
 
-std::vector<double> snapCurveNodesToCorners(
-  const std::vector<SPoint3> &polyline, const std::vector<double> &params,
-  const std::function<bool(int)> &allowed, std::vector<int> *taken)
+std::vector<double>
+snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
+                        const std::vector<double> &params,
+                        const std::function<bool(int)> &allowed,
+                        std::vector<int> *taken, bool keepParity)
 {
   if(taken) taken->clear();
   if(polyline.size() < 3 || params.size() < 3) return params;
@@ -172,8 +172,11 @@ std::vector<double> snapCurveNodesToCorners(
   for(std::size_t k = 0; k + 1 < ends.size(); k++)
     share.push_back(
       segmentsBetween(arc, params, arc.of(ends[k]), arc.of(ends[k + 1])));
-  const std::vector<int> counts =
-    apportionSegments(share, (int)params.size() - 1);
+  std::vector<int> counts;
+  if(keepParity)
+    counts = apportionSegments(share, (int)params.size() - 1);
+  else
+    for(double n : share) counts.push_back(std::max(1, (int)std::lround(n)));
   std::vector<double> snapped = {params.front()};
   for(std::size_t k = 0; k + 1 < ends.size(); k++) {
     const double a = arc.of(ends[k]), b = arc.of(ends[k + 1]);

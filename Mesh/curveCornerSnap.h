@@ -21,15 +21,20 @@
 // degrees or more seen at half a segment's length, not edge by edge; the
 // sharpest of each segment, none within half a segment of the ends or of a
 // sharper one) become nodes, and each piece between them is meshed evenly
-// with its share of the segments (at least one; the curve keeps its count
-// of segments, or at least its parity). Without a corner, params
+// with its share of the segments rounded (at least one); with keepParity,
+// apportioned so that the curve keeps its count of segments (or at least
+// its parity: Gmsh gives each curve of a face Blossom recombines an even
+// count, and an odd one leaves the face an odd number of triangles, which
+// Blossom cannot pair; camelhead's border curves). Rounding each piece
+// instead places the nodes better for triangles (keeping the count:
+// adis16480's kappa min 0.041 -> 0.010, gmsh2x_squirrel's Hausdorff
+// distance 0.27 -> 0.46 %). Without a corner, params
 // as they are. `allowed`, when given, says which input nodes may be taken
 // (not one another curve took: two nodes there would make a degenerate
 // triangle); `corners` gets the ones taken.
-std::vector<double>
-snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
-                        const std::vector<double> &params,
-                        const std::function<bool(int)> &allowed = nullptr,
-                        std::vector<int> *corners = nullptr);
+std::vector<double> snapCurveNodesToCorners(
+  const std::vector<SPoint3> &polyline, const std::vector<double> &params,
+  const std::function<bool(int)> &allowed = nullptr,
+  std::vector<int> *corners = nullptr, bool keepParity = false);
 
 #endif

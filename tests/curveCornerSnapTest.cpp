@@ -161,14 +161,17 @@ TEST(curveCornerSnap, recipeMeshKeepsTheCornersOfAnLShapedPlate)
     EXPECT_EQ(meshNodesAt(c), 1) << c.x() << " " << c.y();
 }
 
-TEST(curveCornerSnap, theCurveKeepsItsCountOfSegments)
+TEST(curveCornerSnap, keepParityKeepsTheCountOfSegments)
 {
   // 5 segments of 4, the corner at 10 halfway: 2.5 segments on each side,
-  // rounded to 3 and 3 the curve had 6, an even count from an odd one (a
-  // face Blossom recombines then has an odd number of triangles); now 3
-  // and 2
-  const std::vector<double> snapped =
-    snapCurveNodesToCorners(lShape(), {0., 4., 8., 12., 16., 20.});
-  ASSERT_EQ(snapped.size(), 6u);
-  EXPECT_EQ(snapped[3], 10.);
+  // rounded to 3 and 3 (6 segments, an even count from an odd one); keeping
+  // the parity (a curve of a face Blossom recombines), 3 and 2
+  const std::vector<double> params = {0., 4., 8., 12., 16., 20.};
+  const std::vector<double> rounded = snapCurveNodesToCorners(lShape(), params);
+  ASSERT_EQ(rounded.size(), 7u);
+  EXPECT_EQ(rounded[3], 10.);
+  const std::vector<double> kept =
+    snapCurveNodesToCorners(lShape(), params, nullptr, nullptr, true);
+  ASSERT_EQ(kept.size(), 6u);
+  EXPECT_EQ(kept[3], 10.);
 }
