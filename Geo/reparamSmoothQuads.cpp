@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <set>
 #include <string>
@@ -36,8 +37,9 @@ namespace {
     return i;
   }
 
-  // The faces with quadrangles Reparam parametrized, joined by the smooth
-  // cut curves between two of them (a face without such a cut alone)
+  // The faces with quadrangles Reparam parametrized, joined by the curves
+  // between two of them (a face without such a curve alone); cuts: the
+  // smooth cut curves among them, which the nodes move across
   std::vector<quadGroup> quadGroupsOf(GModel *m)
   {
     std::vector<GFace *> faces;
@@ -53,11 +55,12 @@ namespace {
     std::vector<GEdge *> cuts;
     for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
       const std::vector<GFace *> sides = (*it)->faces();
-      if(sides.size() != 2 || !index.count(sides[0]) ||
-         !index.count(sides[1]) || !reparamIsCrossableCurve(*it))
+      if(sides.size() != 2 || !index.count(sides[0]) || !index.count(sides[1]))
         continue;
-      cuts.push_back(*it);
+      // joined by any curve: the nodes of a feature curve slide along it,
+      // with the quadrangles of both its faces around them
       parent[rootOf(parent, index[sides[0]])] = rootOf(parent, index[sides[1]]);
+      if(reparamIsCrossableCurve(*it)) cuts.push_back(*it);
     }
     std::map<int, quadGroup> groups;
     for(std::size_t f = 0; f < faces.size(); f++)
@@ -183,6 +186,62 @@ namespace {
     return crossed.size();
   }
 
+  // The nodes of the group's feature curves and borders (the discrete
+  // curves that are no cut of it and bound only its faces) as slides along
+  // their input polylines, kept in `polylines`
+  std::vector<polylineSlide>
+  slidesOf(const quadGroup &g, const std::vector<MVertex *> &nodes,
+           std::vector<std::unique_ptr<std::vector<SPoint3> > > &polylines)
+  {
+    std::vector<polylineSlide> slides(nodes.size());
+    std::map<MVertex *, int> index;
+    for(std::size_t i = 0; i < nodes.size(); i++) index[nodes[i]] = (int)i;
+    const std::set<GFace *> faces(g.faces.begin(), g.faces.end());
+    const std::set<GEdge *> cuts(g.cuts.begin(), g.cuts.end());
+    std::set<GEdge *> curves;
+    for(GFace *gf : g.faces)
+      for(GEdge *ge : gf->edges()) curves.insert(ge);
+    for(GEdge *ge : curves) {
+      bool inside = !cuts.count(ge);
+      for(GFace *gf : ge->faces()) inside = inside && faces.count(gf);
+      std::unique_ptr<std::vector<SPoint3> > polyline(
+        new std::vector<SPoint3>());
+      if(!inside || !reparamInputPolyline(ge, *polyline)) continue;
+      std::vector<std::pair<double, int> > along;
+      for(MVertex *v : ge->mesh_vertices) {
+        double t;
+        auto it = index.find(v);
+        if(it != index.end() && v->getParameter(0, t))
+          along.push_back(std::make_pair(t, it->second));
+      }
+      std::sort(along.begin(), along.end());
+      const Range<double> ends = ge->parBounds(0);
+      for(std::size_t k = 0; k < along.size(); k++) {
+        polylineSlide &s = slides[along[k].second];
+        s.polyline = polyline.get();
+        s.t = along[k].first;
+        s.before = k ? along[k - 1].first : ends.low();
+        s.after = k + 1 < along.size() ? along[k + 1].first : ends.high();
+        s.previous = k ? along[k - 1].second : -1;
+        s.next = k + 1 < along.size() ? along[k + 1].second : -1;
+      }
+      polylines.push_back(std::move(polyline));
+    }
+    return slides;
+  }
+
+  // The curve nodes slid: their new parameter and place
+  void writeSlides(const surfaceMesh &m, const std::vector<MVertex *> &nodes,
+                   const std::vector<polylineSlide> &slides,
+                   const std::vector<double> &before)
+  {
+    for(std::size_t i = 0; i < nodes.size(); i++) {
+      if(!slides[i].polyline || slides[i].t == before[i]) continue;
+      nodes[i]->setParameter(0, slides[i].t);
+      nodes[i]->setXYZ(m.points[i].x(), m.points[i].y(), m.points[i].z());
+    }
+  }
+
   bool smoothGroup(const quadGroup &g)
   {
     const double t0 = TimeOfDay();
@@ -201,11 +260,16 @@ namespace {
       movable[i] = (e->dim() == 2 && faces.count((GFace *)e)) ||
                    (e->dim() == 1 && cuts.count((GEdge *)e));
     }
+    std::vector<std::unique_ptr<std::vector<SPoint3> > > polylines;
+    std::vector<polylineSlide> slides = slidesOf(g, nodes, polylines);
+    std::vector<double> slideFrom;
+    for(const polylineSlide &s : slides) slideFrom.push_back(s.t);
     std::vector<int> landing;
     const quadSmoothingResult r =
-      smoothQuadsOnInput(m, movable, onInput, landing);
+      smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides);
     for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
     if(!r.moves) return false;
+    writeSlides(m, nodes, slides, slideFrom);
     const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
     for(GFace *gf : g.faces) {
       gf->deleteVertexArrays();
@@ -213,11 +277,12 @@ namespace {
       reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
     }
     Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
-              "(%lu node moves in %d sweeps, %lu of %lu cut curves crossed): "
-              "eta min %.3g -> %.3g, mean %.3g -> %.3g (%g s)",
+              "(%lu node moves in %d sweeps, %lu of them along curves, %lu "
+              "of %lu cut curves crossed): eta min %.3g -> %.3g, mean %.3g "
+              "-> %.3g (%g s)",
               g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), r.moves,
-              r.sweeps, crossed, g.cuts.size(), r.etaMinBefore, r.etaMinAfter,
-              r.etaMeanBefore, r.etaMeanAfter, TimeOfDay() - t0);
+              r.sweeps, r.slides, crossed, g.cuts.size(), r.etaMinBefore,
+              r.etaMinAfter, r.etaMeanBefore, r.etaMeanAfter, TimeOfDay() - t0);
     return true;
   }
 

@@ -57,22 +57,26 @@ namespace {
     return farthest;
   }
 
-  // Whether the chords from the node at t to its neighbours follow the
-  // polyline within sag of their length, or no worse than at the old place
   bool followsTheCurve(const curveNodeRing &ring, double t, double sag)
   {
-    for(double end : {ring.before, ring.after}) {
-      const double length = pointOnPolyline(ring.polyline, t)
-                              .distance(pointOnPolyline(ring.polyline, end));
-      const double now = sagBetween(ring.polyline, t, end);
-      if(now > sag * length &&
-         now > sagBetween(ring.polyline, ring.t, end) * (1. + 1e-9))
-        return false;
-    }
-    return true;
+    return chordsFollowPolyline(ring.polyline, ring.t, t, ring.before,
+                                ring.after, sag);
   }
 
 } // namespace
+
+bool chordsFollowPolyline(const std::vector<SPoint3> &polyline, double was,
+                          double t, double before, double after, double sag)
+{
+  for(double end : {before, after}) {
+    const double length =
+      pointOnPolyline(polyline, t).distance(pointOnPolyline(polyline, end));
+    const double now = sagBetween(polyline, t, end);
+    if(now > sag * length && now > sagBetween(polyline, was, end) * (1. + 1e-9))
+      return false;
+  }
+  return true;
+}
 
 SPoint3 pointOnPolyline(const std::vector<SPoint3> &polyline, double t)
 {

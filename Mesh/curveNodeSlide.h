@@ -43,6 +43,13 @@ struct curveNodeSlide {
 curveNodeSlide slideCurveNode(const curveNodeRing &ring, double gain = 1e-3,
                               double maxTurn = 0.5, double sag = 0.05);
 
+// Whether the chords from a node at parameter t of the polyline to its
+// neighbours at `before` and `after` follow the polyline within sag times
+// their length, or no worse than from where it was (a node on a corner of
+// the polyline stays there)
+bool chordsFollowPolyline(const std::vector<SPoint3> &polyline, double was,
+                          double t, double before, double after, double sag);
+
 // The point of the polyline at parameter t (node i at i)
 SPoint3 pointOnPolyline(const std::vector<SPoint3> &polyline, double t);
 

@@ -4,6 +4,7 @@
 #include <array>
 #include "SVector3.h"
 #include "closestTriangle.h"
+#include "curveNodeSlide.h"
 #include "meshFidelity.h"
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
@@ -162,6 +163,51 @@ namespace {
       return landing;
     }
 
+    // Slides point v along its polyline where its ring is best; whether it
+    // moved (s.t updated)
+    bool slide(int v, std::vector<polylineSlide> &slides)
+    {
+      polylineSlide &s = slides[v];
+      if(s.previous >= 0) s.before = slides[s.previous].t;
+      if(s.next >= 0) s.after = slides[s.next].t;
+      if(_list.around[v].empty() || !(s.after > s.before)) return false;
+      _origin = _m.points[v];
+      _normals.clear();
+      for(int e : _list.around[v])
+        _normals.push_back(normalOf(_list.corners[e], _m.points));
+      const ringScore start = score(v, _origin);
+      ringScore best = start;
+      double at = s.t;
+      // not nearer to a neighbour than a tenth of the way
+      const double span = s.after - s.before, margin = 0.1 * span;
+      for(double step = _o.firstStep * span; step >= _o.lastStep * span;) {
+        bool improved = false;
+        for(double sign : {1., -1.}) {
+          const double t = at + sign * step;
+          if(t < s.before + margin || t > s.after - margin ||
+             !chordsFollowPolyline(*s.polyline, s.t, t, s.before, s.after,
+                                   0.05))
+            continue;
+          const ringScore r = score(v, pointOnPolyline(*s.polyline, t));
+          if(r.min < start.min - 1e-12 || r.kappaMin < start.kappaMin - 1e-12 ||
+             r.sum <= best.sum + 1e-9)
+            continue;
+          best = r;
+          at = t;
+          improved = true;
+          break;
+        }
+        if(!improved) step /= 2.;
+      }
+      if(at == s.t || best.sum < start.sum + _o.gain) {
+        _m.points[v] = _origin;
+        return false;
+      }
+      _m.points[v] = pointOnPolyline(*s.polyline, at);
+      s.t = at;
+      return true;
+    }
+
   private:
     // The ring's quality with v at x; min -1 where an element turns over
     // or the ring leaves v's old place behind
@@ -242,28 +288,39 @@ quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
                                        const std::vector<bool> &movable,
                                        const closestTriangleSearch &onInput,
                                        std::vector<int> &landing,
-                                       const quadSmoothingOptions &o)
+                                       const quadSmoothingOptions &o,
+                                       std::vector<polylineSlide> *slides)
 {
+  if(slides && slides->size() != m.points.size()) slides = nullptr;
+  auto canMove = [&](int v) {
+    return ((std::size_t)v < movable.size() && movable[v]) ||
+           (slides && (*slides)[v].polyline);
+  };
   quadSmoothingResult r;
   etaOf(m, r.etaMinBefore, r.etaMeanBefore);
   landing.assign(m.points.size(), -1);
   const elementList list(m);
   nodeMover mover(m, list, onInput, o);
   std::vector<bool> active(m.points.size(), false);
-  for(std::size_t v = 0; v < m.points.size(); v++)
-    active[v] = v < movable.size() && movable[v];
+  for(std::size_t v = 0; v < m.points.size(); v++) active[v] = canMove((int)v);
   for(; r.sweeps < o.sweeps; r.sweeps++) {
     std::vector<bool> next(m.points.size(), false);
     std::size_t moved = 0;
     mover.raiseEta(r.sweeps >= o.sweeps / 2);
     for(int v : worstFirst(m, list, active)) {
-      const int hit = mover.move(v, landing[v]);
-      if(hit < 0) continue;
-      landing[v] = hit;
+      if(slides && (*slides)[v].polyline) {
+        if(!mover.slide(v, *slides)) continue;
+        r.slides++;
+      }
+      else {
+        const int hit = mover.move(v, landing[v]);
+        if(hit < 0) continue;
+        landing[v] = hit;
+      }
       moved++;
       for(int e : list.around[v])
         for(int u : list.corners[e])
-          if(u >= 0 && movable[u]) next[u] = true;
+          if(u >= 0 && canMove(u)) next[u] = true;
     }
     r.moves += moved;
     active.swap(next);

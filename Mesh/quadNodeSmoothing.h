@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <vector>
+#include "SPoint3.h"
 
 class closestTriangleSearch;
 struct surfaceMesh;
@@ -44,10 +45,22 @@ struct quadSmoothingOptions {
   double maxTurn = M_PI / 4.;
 };
 
+// A point that moves only along a polyline: a node of a feature curve or a
+// border (its polyline: the input's, node i at parameter i), kept strictly
+// between its neighbours on the curve (parameters before and after), its
+// chords to them following the polyline (Mesh/curveNodeSlide.h)
+struct polylineSlide {
+  const std::vector<SPoint3> *polyline = nullptr; // null: not sliding
+  double t = 0., before = 0., after = 0.;
+  // the neighbours' points when they slide along the same polyline (-1:
+  // fixed at before or after): their t bounds this one's
+  int previous = -1, next = -1;
+};
+
 struct quadSmoothingResult {
   double etaMinBefore = 1., etaMeanBefore = 1.;
   double etaMinAfter = 1., etaMeanAfter = 1.;
-  std::size_t moves = 0, searches = 0;
+  std::size_t moves = 0, searches = 0, slides = 0;
   int sweeps = 0;
 };
 
@@ -57,11 +70,14 @@ struct quadSmoothingResult {
 // deviation, the second by eta). m's elements must be consistently
 // oriented around each movable point. landing[i] is set to the input
 // triangle point i was moved onto (-1: not moved). eta over m's
-// quadrangles, before and after
-quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
-                                       const std::vector<bool> &movable,
-                                       const closestTriangleSearch &onInput,
-                                       std::vector<int> &landing,
-                                       const quadSmoothingOptions &o = {});
+// quadrangles, before and after. The points with a polyline in `slides`
+// (when not empty, one per point) slide along it instead (its t updated,
+// landing left at -1)
+quadSmoothingResult
+smoothQuadsOnInput(surfaceMesh &m, const std::vector<bool> &movable,
+                   const closestTriangleSearch &onInput,
+                   std::vector<int> &landing,
+                   const quadSmoothingOptions &o = {},
+                   std::vector<polylineSlide> *slides = nullptr);
 
 #endif
