@@ -110,3 +110,19 @@ TEST(curveNodeSlide, aNodeAHairFromItsNeighbourMovesAway)
   EXPECT_GT(s.t, 1.);
   EXPECT_LT(s.t, 3.);
 }
+
+TEST(curveNodeSlide, chordsFollowTheirPolyline)
+{
+  // an L: 10 unit steps along x, then 10 along y; a node at the corner (10)
+  // between neighbours at 5 and 15
+  std::vector<SPoint3> p;
+  for(int i = 0; i <= 10; i++) p.push_back(SPoint3(i, 0, 0));
+  for(int i = 1; i <= 10; i++) p.push_back(SPoint3(10, i, 0));
+  EXPECT_TRUE(chordsFollowPolyline(p, 10., 10., 5., 15., 0.05));
+  // off the corner, a chord cuts it
+  EXPECT_FALSE(chordsFollowPolyline(p, 10., 11., 5., 15., 0.05));
+  // along the straight part, anywhere
+  EXPECT_TRUE(chordsFollowPolyline(p, 3., 4., 1., 8., 0.05));
+  // no worse than where it was: allowed
+  EXPECT_TRUE(chordsFollowPolyline(p, 11., 11., 5., 15., 0.05));
+}

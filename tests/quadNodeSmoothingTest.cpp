@@ -151,3 +151,65 @@ TEST(quadNodeSmoothing, neverWorseNorTurnedAndOnACurvedInput)
     EXPECT_LT(onInput.closest(m.points[i]).distance, 1e-12) << i;
   }
 }
+
+TEST(quadNodeSmoothing, aBorderNodeSlidesAlongItsPolyline)
+{
+  // the bottom border of a 4 x 4 grid, its node 2 pushed to x = 2.6: it
+  // slides back between its neighbours, along the border (y = 0); the
+  // polyline: the border's input, 8 edges of 0.5
+  const int n = 4;
+  surfaceMesh m = quadGrid(n);
+  m.points[2] = SPoint3(2.6, 0., 0.);
+  std::vector<SPoint3> border;
+  for(int i = 0; i <= 8; i++) border.push_back(SPoint3(0.5 * i, 0., 0.));
+  std::vector<polylineSlide> slides(m.points.size());
+  for(int i = 1; i < n; i++) {
+    polylineSlide &s = slides[i];
+    s.polyline = &border;
+    s.t = i == 2 ? 5.2 : 2. * i;
+    s.before = 2. * (i - 1);
+    s.after = 2. * (i + 1);
+    s.previous = i > 1 ? i - 1 : -1;
+    s.next = i + 1 < n ? i + 1 : -1;
+  }
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(8, 8, 4., 4.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  std::vector<int> landing;
+  const quadSmoothingResult r =
+    smoothQuadsOnInput(m, std::vector<bool>(m.points.size(), false), onInput,
+                       landing, {}, &slides);
+  EXPECT_GT(r.slides, 0u);
+  EXPECT_GT(r.etaMinAfter, 0.95); // 0.81 before
+  EXPECT_NEAR(slides[2].t, 4., 0.2);
+  EXPECT_NEAR(m.points[2].x(), 2., 0.1);
+  EXPECT_EQ(m.points[2].y(), 0.);
+  EXPECT_EQ(landing[2], -1); // not moved on the input: along the polyline
+}
+
+TEST(quadNodeSmoothing, aNodeOnAPolylineCornerStays)
+{
+  // the same border bent at node 2 (x = 2): 40 degrees up after it; the
+  // node sits on the corner, and a slide would cut it (its chords 5 % of
+  // their length off the polyline)
+  const int n = 4;
+  surfaceMesh m = quadGrid(n);
+  std::vector<SPoint3> border;
+  for(int i = 0; i <= 8; i++) {
+    const double x = 0.5 * i;
+    border.push_back(
+      SPoint3(x, x > 2. ? (x - 2.) * std::tan(40. * M_PI / 180.) : 0., 0.));
+  }
+  for(int i = 0; i <= n; i++) m.points[i] = border[2 * i];
+  std::vector<polylineSlide> slides(m.points.size());
+  polylineSlide &s = slides[2];
+  s.polyline = &border;
+  s.t = 4.;
+  s.before = 2.;
+  s.after = 6.;
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(8, 8, 4., 4.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  std::vector<int> landing;
+  smoothQuadsOnInput(m, std::vector<bool>(m.points.size(), false), onInput,
+                     landing, {}, &slides);
+  EXPECT_EQ(slides[2].t, 4.);
+}
