@@ -395,40 +395,50 @@ namespace {
 
 } // namespace
 
-std::vector<cutGroup> facesJoinedByCuts(GModel *m)
+std::vector<cutGroup> facesJoinedBy(GModel *m,
+                                    const std::function<bool(GFace *)> &member,
+                                    const std::function<bool(GEdge *)> &joins,
+                                    bool alone)
 {
   std::vector<GFace *> faces;
   std::map<GFace *, int> index;
   for(auto it = m->firstFace(); it != m->lastFace(); ++it)
-    if(reparamOptimizableFace(*it)) {
+    if(member(*it)) {
       index[*it] = (int)faces.size();
       faces.push_back(*it);
     }
   std::vector<int> parent(faces.size());
   std::iota(parent.begin(), parent.end(), 0);
+  std::vector<bool> joined(faces.size(), false);
   std::vector<GEdge *> cuts;
   for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
     GEdge *ge = *it;
     const std::vector<GFace *> sides = ge->faces();
     // two faces: a border has one, a slit inside a face too
-    if(sides.size() != 2) continue;
-    bool joined = true;
-    for(GFace *gf : sides) joined = joined && index.count(gf);
-    if(!joined || !reparamIsCrossableCurve(ge)) continue;
-    cuts.push_back(ge);
-    parent[rootOf(parent, index[sides[0]])] =
-      rootOf(parent, index[sides.back()]);
+    if(sides.size() != 2 || !index.count(sides[0]) || !index.count(sides[1]) ||
+       !joins(ge))
+      continue;
+    const int a = index[sides[0]], b = index[sides[1]];
+    parent[rootOf(parent, a)] = rootOf(parent, b);
+    joined[a] = joined[b] = true;
+    if(reparamIsCrossableCurve(ge)) cuts.push_back(ge);
   }
   std::map<int, cutGroup> groups;
+  for(std::size_t f = 0; f < faces.size(); f++)
+    if(joined[f] || alone)
+      groups[rootOf(parent, (int)f)].faces.push_back(faces[f]);
   for(GEdge *ge : cuts)
     groups[rootOf(parent, index[ge->faces()[0]])].cuts.push_back(ge);
-  for(std::size_t f = 0; f < faces.size(); f++) {
-    auto it = groups.find(rootOf(parent, (int)f));
-    if(it != groups.end()) it->second.faces.push_back(faces[f]);
-  }
   std::vector<cutGroup> list;
   for(auto &g : groups) list.push_back(g.second);
   return list;
+}
+
+std::vector<cutGroup> facesJoinedByCuts(GModel *m)
+{
+  return facesJoinedBy(
+    m, [](GFace *gf) { return reparamOptimizableFace(gf); },
+    [](GEdge *ge) { return reparamIsCrossableCurve(ge); }, false);
 }
 
 int reparamOptimizeMeshedModel(GModel *m)

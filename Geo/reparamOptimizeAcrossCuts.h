@@ -18,6 +18,7 @@
 #ifndef REPARAM_OPTIMIZE_ACROSS_CUTS_H
 #define REPARAM_OPTIMIZE_ACROSS_CUTS_H
 
+#include <functional>
 #include <vector>
 
 class GEdge;
@@ -29,6 +30,15 @@ struct cutGroup {
   std::vector<GFace *> faces;
   std::vector<GEdge *> cuts;
 };
+
+// The faces of m that `member` accepts, joined into groups by the curves
+// between two of them that `joins` accepts; each group with those of its
+// curves that are smooth cuts (Geo/reparamCurveMesh.h). A face joined to
+// none is a group of its own if `alone`, else in no group
+std::vector<cutGroup> facesJoinedBy(GModel *m,
+                                    const std::function<bool(GFace *)> &member,
+                                    const std::function<bool(GEdge *)> &joins,
+                                    bool alone);
 
 // The groups of m's triangle-meshed discrete faces Reparam parametrized
 // joined by smooth cut curves (each group has a cut and two faces or more)

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <set>
 #include <string>
 #include "GEdge.h"
@@ -21,59 +20,30 @@
 #include "quadNodeSmoothing.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceMeshing.h"
+#include "reparamOptimizeAcrossCuts.h"
 #include "reparamReport.h"
 #include "reparamSmoothQuads.h"
 
 namespace {
 
-  struct quadGroup {
-    std::vector<GFace *> faces;
-    std::vector<GEdge *> cuts;
-  };
-
-  int rootOf(std::vector<int> &parent, int i)
-  {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-
   // The faces with quadrangles Reparam parametrized, joined by the curves
-  // between two of them (a face without such a curve alone); cuts: the
-  // smooth cut curves among them, which the nodes move across
-  std::vector<quadGroup> quadGroupsOf(GModel *m)
+  // between two of them (a face without such a curve alone: its inner
+  // nodes move); the nodes of a feature curve slide along it, with the
+  // quadrangles of both its faces around them, those of the smooth cuts
+  // move across them
+  std::vector<cutGroup> cutGroupsOf(GModel *m)
   {
-    std::vector<GFace *> faces;
-    std::map<GFace *, int> index;
-    for(auto it = m->firstFace(); it != m->lastFace(); ++it)
-      if(!(*it)->quadrangles.empty() &&
-         reparamRecombineWithParametrization(*it)) {
-        index[*it] = (int)faces.size();
-        faces.push_back(*it);
-      }
-    std::vector<int> parent(faces.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    std::vector<GEdge *> cuts;
-    for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
-      const std::vector<GFace *> sides = (*it)->faces();
-      if(sides.size() != 2 || !index.count(sides[0]) || !index.count(sides[1]))
-        continue;
-      // joined by any curve: the nodes of a feature curve slide along it,
-      // with the quadrangles of both its faces around them
-      parent[rootOf(parent, index[sides[0]])] = rootOf(parent, index[sides[1]]);
-      if(reparamIsCrossableCurve(*it)) cuts.push_back(*it);
-    }
-    std::map<int, quadGroup> groups;
-    for(std::size_t f = 0; f < faces.size(); f++)
-      groups[rootOf(parent, (int)f)].faces.push_back(faces[f]);
-    for(GEdge *ge : cuts)
-      groups[rootOf(parent, index[ge->faces()[0]])].cuts.push_back(ge);
-    std::vector<quadGroup> list;
-    for(auto &g : groups) list.push_back(g.second);
-    return list;
+    return facesJoinedBy(
+      m,
+      [](GFace *gf) {
+        return !gf->quadrangles.empty() &&
+               reparamRecombineWithParametrization(gf);
+      },
+      [](GEdge *) { return true; }, true);
   }
 
   // The group's elements as one mesh; nodes[i]: point i's node
-  surfaceMesh meshOfGroup(const quadGroup &g, std::vector<MVertex *> &nodes)
+  surfaceMesh meshOfGroup(const cutGroup &g, std::vector<MVertex *> &nodes)
   {
     surfaceMesh m;
     std::map<MVertex *, int> index;
@@ -115,7 +85,7 @@ namespace {
     return std::make_pair(n, n ? gf->getMeshElement(0) : nullptr);
   }
 
-  bool alreadySmoothed(const quadGroup &g)
+  bool alreadySmoothed(const cutGroup &g)
   {
     for(GFace *gf : g.faces) {
       auto it = smoothedMeshes().find(gf);
@@ -136,7 +106,7 @@ namespace {
   // Writes the moved points back: a face node goes to the face whose input
   // it landed on, a cut node moved off its cut is replaced by a new node of
   // that face (and the cut keeps no 1D element). Returns the cuts crossed
-  std::size_t writeBack(const quadGroup &g, const surfaceMesh &m,
+  std::size_t writeBack(const cutGroup &g, const surfaceMesh &m,
                         const std::vector<MVertex *> &nodes,
                         const std::vector<int> &landing,
                         const std::vector<int> &inputFace)
@@ -190,7 +160,7 @@ namespace {
   // curves that are no cut of it and bound only its faces) as slides along
   // their input polylines, kept in `polylines`
   std::vector<polylineSlide>
-  slidesOf(const quadGroup &g, const std::vector<MVertex *> &nodes,
+  slidesOf(const cutGroup &g, const std::vector<MVertex *> &nodes,
            std::vector<std::unique_ptr<std::vector<SPoint3> > > &polylines)
   {
     std::vector<polylineSlide> slides(nodes.size());
@@ -242,7 +212,7 @@ namespace {
     }
   }
 
-  bool smoothGroup(const quadGroup &g)
+  bool smoothGroup(const cutGroup &g)
   {
     const double t0 = TimeOfDay();
     std::vector<surfaceMesh> inputs;
@@ -291,7 +261,7 @@ namespace {
 int reparamSmoothQuadMeshes(GModel *m)
 {
   int changed = 0;
-  for(const quadGroup &g : quadGroupsOf(m))
+  for(const cutGroup &g : cutGroupsOf(m))
     if(!alreadySmoothed(g)) changed += smoothGroup(g);
   if(changed) m->destroyMeshCaches();
   return changed;

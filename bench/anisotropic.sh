@@ -7,18 +7,9 @@
 #       REPARAM_BENCH_TIMEOUT   seconds per run, default 300
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-build=${REPARAM_BUILD_DIR:-$here/build}
-gmsh=$build/gmsh/gmsh
-[ -x "$gmsh" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
-  meshes=("$here/tutorials/dome.stl")
-  data=$here/../shared/data/meshes
-  for m in gmsh2x_bifurcation aneurysm aorta_gmsh; do
-    [ -f "$data/$m.stl" ] && meshes+=("$data/$m.stl")
-  done
-fi
+source "$here/bench/common.sh"
+benchGmsh
+smoothMeshes "gmsh2x_bifurcation aneurysm aorta_gmsh" "$@"
 exec python3 "$here/bench/anisotropic.py" --gmsh "$gmsh" --repo "$here" \
   --n "${REPARAM_ANISOTROPIC_N:-20}" --timeout "${REPARAM_BENCH_TIMEOUT:-300}" \
   "${meshes[@]}"

@@ -21,3 +21,29 @@ benchProgram() {
   bench=$build/bench/$1
   [ -x "$bench" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
 }
+
+# benchGmsh sets `gmsh` to the built gmsh executable (REPARAM_BUILD_DIR,
+# default build/), and stops if it is not built.
+benchGmsh() {
+  local build=${REPARAM_BUILD_DIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build}
+  gmsh=$build/gmsh/gmsh
+  [ -x "$gmsh" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
+}
+
+# smoothMeshes "NAME..." [FILE...] sets `meshes` to the files given, or by
+# default to the tutorials' dome.stl and the shared meshes named (those
+# present)
+smoothMeshes() {
+  local here data m names=$1
+  shift
+  if [ $# -gt 0 ]; then
+    meshes=("$@")
+    return
+  fi
+  here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  meshes=("$here/tutorials/dome.stl")
+  data=$here/../shared/data/meshes
+  for m in $names; do
+    [ -f "$data/$m.stl" ] && meshes+=("$data/$m.stl")
+  done
+}

@@ -7,18 +7,9 @@
 #       REPARAM_BENCH_TIMEOUT   seconds per run, default 300
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-build=${REPARAM_BUILD_DIR:-$here/build}
-gmsh=$build/gmsh/gmsh
-[ -x "$gmsh" ] || { echo "Build first: scripts/build.sh" >&2; exit 1; }
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
-  meshes=("$here/tutorials/dome.stl")
-  data=$here/../shared/data/meshes
-  for m in aorta_gmsh gmsh2x_bifurcation aneurysm tooth fertility camelhead armadillo gmsh2x_skull; do
-    [ -f "$data/$m.stl" ] && meshes+=("$data/$m.stl")
-  done
-fi
+source "$here/bench/common.sh"
+benchGmsh
+smoothMeshes "aorta_gmsh gmsh2x_bifurcation aneurysm tooth fertility camelhead armadillo gmsh2x_skull" "$@"
 exec python3 "$here/bench/quads.py" --gmsh "$gmsh" --repo "$here" \
   --timeout "${REPARAM_BENCH_TIMEOUT:-300}" \
   --maps "${REPARAM_QUADS_MAPS:-0 4 5 6}" "${meshes[@]}"
