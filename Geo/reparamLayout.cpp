@@ -40,7 +40,8 @@ double mapCrowding(const std::vector<SPoint2> &uv,
               c = triangleNodes[3 * t + 2];
     uvArea[t] = std::fabs((uv[b].x() - uv[a].x()) * (uv[c].y() - uv[a].y()) -
                           (uv[b].y() - uv[a].y()) * (uv[c].x() - uv[a].x()));
-    SVector3 normal = crossprod(SVector3(xyz[a], xyz[b]), SVector3(xyz[a], xyz[c]));
+    SVector3 normal =
+      crossprod(SVector3(xyz[a], xyz[b]), SVector3(xyz[a], xyz[c]));
     area[t] = normal.norm();
     uvTotal += uvArea[t];
     total += area[t];
@@ -72,7 +73,8 @@ double boundaryLargeness(const std::vector<SPoint3> &xyz,
   }
   double length = 0.;
   for(const auto &e : uses)
-    if(e.second == 1) length += xyz[e.first.first].distance(xyz[e.first.second]);
+    if(e.second == 1)
+      length += xyz[e.first.first].distance(xyz[e.first.second]);
   if(!(length > 0.)) return 1e300; // closed
   return area / (length * length / (4. * M_PI));
 }
@@ -212,7 +214,8 @@ namespace {
       }
     reparamRecordFixedEdges(fixed);
     for(const auto &e : layout.cutEdges) {
-      const std::array<int, 2> key = {{std::min(e[0], e[1]), std::max(e[0], e[1])}};
+      const std::array<int, 2> key = {
+        {std::min(e[0], e[1]), std::max(e[0], e[1])}};
       const int edge = adjacency.find(key[0], key[1]);
       if(sharp.count(key) || edge < 0 || adjacency.numTriangles(edge) != 2)
         continue;
@@ -265,6 +268,7 @@ void reparamForgetJunctions() { junctions.clear(); }
 int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
 {
   junctions.clear();
+  reparamForgetLayoutMaps();
   const reparamOptions &options = getReparamOptions();
   if(options.parametrization == (int)compoundParametrization::gmsh ||
      !options.layout)
@@ -313,6 +317,7 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     // CreateGeometry then keeps its input triangles, with a warning naming
     // the surface
     Msg::Info("Reparam: a patch of the layout cannot be parametrized as it "
-              "is (%s)", u.second.c_str());
+              "is (%s)",
+              u.second.c_str());
   return 1;
 }

@@ -18,6 +18,10 @@ class MTriangle;
 // parts): 1 with the (u, v) and 3D points of the nodes and the triangles'
 // node indices when it is one-to-one, else -1 and the reason in `why`; 0
 // when Mesh.CompoundParametrization = 0 leaves it to Gmsh.
+// Drops the maps the patch layout kept for CreateGeometry (at the start of
+// a new layout)
+void reparamForgetLayoutMaps();
+
 int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<SPoint2> &uv,
                               std::vector<SPoint3> &xyz,
