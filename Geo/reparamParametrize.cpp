@@ -173,8 +173,10 @@ namespace {
 
   // runMapChain, or the map the layout computed for the same patch
   checkedMap mapChainOf(const discretePatch &patch, int choice,
-                        const std::vector<mapStep> &steps, bool repair)
+                        const std::vector<mapStep> &steps, bool repair,
+                        bool &fromLayout)
   {
+    fromLayout = false;
     cachedMap key;
     key.points = patch.points.size();
     key.triangles = patch.triangles.size();
@@ -190,6 +192,7 @@ namespace {
         continue;
       checkedMap found = std::move(cache[i].result);
       cache.erase(cache.begin() + i);
+      fromLayout = true;
       return found;
     }
     checkedMap result = runMapChain(patch, steps, repair);
@@ -321,8 +324,9 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
     nodes.clear();
     return -1;
   }
+  bool fromLayout = false;
   checkedMap result =
-    mapChainOf(*mapped, choice, steps, getReparamOptions().repair);
+    mapChainOf(*mapped, choice, steps, getReparamOptions().repair, fromLayout);
   const std::string surface = surfaceName(nodes, triangles.size());
   for(const mapAttempt &a : result.attempts) logAttempt(surface, a);
   if(result.chosen < 0) {
@@ -407,6 +411,7 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   record.assembleTime = map.assembleTime;
   record.solveTime = map.solveTime;
   record.checkTime = checkTime;
+  record.fromLayout = fromLayout;
   recordParametrization(stl_vertices_uv, &record);
   // the face's tips become mesh nodes (points embedded in it)...
   if(creatingFace) {
@@ -419,11 +424,12 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   if(!quiet)
     Msg::Info("Reparam: %s map of %lu nodes, %lu triangles, %lu hole%s "
               "(%d filled): patch %.3g s, fill %.3g s, assemble %.3g s, solve "
-              "%.3g s, checks %.3g s",
+              "%.3g s, checks %.3g s%s",
               compoundParametrizationName(chosen.map), nodes.size(),
               triangles.size(), patch.boundaryLoops.size() - 1,
               patch.boundaryLoops.size() == 2 ? "" : "s", filledHoles, t1 - t0,
-              t2 - t1, map.assembleTime, map.solveTime, checkTime);
+              t2 - t1, map.assembleTime, map.solveTime, checkTime,
+              fromLayout ? " (computed by the layout)" : "");
   return 1;
 }
 

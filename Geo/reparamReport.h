@@ -31,6 +31,9 @@ struct parametrizationRecord {
   double patchTime = 0., fillTime = 0., assembleTime = 0., solveTime = 0.,
          checkTime = 0.;
   double fallbackTime = 0.; // the maps tried before the one kept
+  // the map the patch layout computed for the same part, taken as it is
+  // (its times are the layout's)
+  bool fromLayout = false;
 };
 
 // Records the parametrization written into `uv` (the stl_vertices_uv of the
