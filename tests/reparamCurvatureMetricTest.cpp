@@ -124,3 +124,26 @@ TEST(curvatureMetricMesh, isotropicMeshersTakeTheSmallestSize)
   EXPECT_NEAR(m.around / gmshSizes.around, 1., 0.1);
   EXPECT_NEAR((double)m.triangles / gmshSizes.triangles, 1., 0.15);
 }
+
+TEST(curvatureMetricMesh, optionIsOffByDefaultAndNonNegative)
+{
+  double value = -1.;
+  gmsh::option::getNumber("Mesh.CompoundCurvatureMetric", value);
+  EXPECT_EQ(value, 0.);
+  gmsh::logger::start();
+  gmsh::option::setNumber("Mesh.CompoundCurvatureMetric", -3);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  gmsh::logger::stop();
+  gmsh::option::getNumber("Mesh.CompoundCurvatureMetric", value);
+  EXPECT_EQ(value, 0.);
+  bool said = false;
+  for(const std::string &l : log)
+    said = said || l.find("Mesh.CompoundCurvatureMetric must be >= 0") !=
+                     std::string::npos;
+  EXPECT_TRUE(said);
+  gmsh::option::setNumber("Mesh.CompoundCurvatureMetric", 20);
+  gmsh::option::getNumber("Mesh.CompoundCurvatureMetric", value);
+  EXPECT_EQ(value, 20.);
+  gmsh::option::setNumber("Mesh.CompoundCurvatureMetric", 0);
+}
