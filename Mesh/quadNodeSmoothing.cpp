@@ -106,30 +106,11 @@ namespace {
     // (-1: not moved)
     int move(int v, int hint)
     {
-      const std::vector<int> &ring = _list.around[v];
-      if(ring.empty()) return -1;
-      _origin = _m.points[v];
-      _normals.clear();
-      SVector3 mean(0., 0., 0.);
-      double edge = 0.;
-      int edges = 0;
-      for(int e : ring) {
-        _normals.push_back(normalOf(_list.corners[e], _m.points));
-        mean += _normals.back().unit();
-        for(int u : _list.corners[e])
-          if(u >= 0 && u != v) {
-            edge += _origin.distance(_m.points[u]);
-            edges++;
-          }
-      }
-      if(mean.norm() == 0. || !edges) return -1;
-      mean.normalize();
-      SVector3 e1 = crossprod(mean, SVector3(1., 0., 0.));
-      if(e1.norm() < 0.5) e1 = crossprod(mean, SVector3(0., 1., 0.));
-      e1.normalize();
-      const SVector3 e2 = crossprod(mean, e1);
-      edge /= edges;
-
+      if(_list.around[v].empty()) return -1;
+      startRing(v);
+      SVector3 e1, e2;
+      double edge;
+      if(!tangentFrame(v, e1, e2, edge)) return -1;
       const ringScore start = score(v, _origin);
       ringScore best = start;
       SPoint3 at = _origin;
@@ -144,9 +125,7 @@ namespace {
           _searches++;
           if(hit.triangle < 0) continue;
           const ringScore s = score(v, hit.point);
-          if(s.min < start.min - 1e-12 || s.kappaMin < start.kappaMin - 1e-12 ||
-             s.sum <= best.sum + 1e-9)
-            continue;
+          if(!better(s, start, best)) continue;
           best = s;
           at = hit.point;
           landing = hint = hit.triangle;
@@ -171,10 +150,7 @@ namespace {
       if(s.previous >= 0) s.before = slides[s.previous].t;
       if(s.next >= 0) s.after = slides[s.next].t;
       if(_list.around[v].empty() || !(s.after > s.before)) return false;
-      _origin = _m.points[v];
-      _normals.clear();
-      for(int e : _list.around[v])
-        _normals.push_back(normalOf(_list.corners[e], _m.points));
+      startRing(v);
       const ringScore start = score(v, _origin);
       ringScore best = start;
       double at = s.t;
@@ -189,9 +165,7 @@ namespace {
                                    0.05))
             continue;
           const ringScore r = score(v, pointOnPolyline(*s.polyline, t));
-          if(r.min < start.min - 1e-12 || r.kappaMin < start.kappaMin - 1e-12 ||
-             r.sum <= best.sum + 1e-9)
-            continue;
+          if(!better(r, start, best)) continue;
           best = r;
           at = t;
           improved = true;
@@ -209,6 +183,48 @@ namespace {
     }
 
   private:
+    // v's old place and its elements' normals, which moves are measured
+    // against
+    void startRing(int v)
+    {
+      _origin = _m.points[v];
+      _normals.clear();
+      for(int e : _list.around[v])
+        _normals.push_back(normalOf(_list.corners[e], _m.points));
+    }
+
+    // The plane of v's ring (its elements' mean normal) and its mean edge
+    bool tangentFrame(int v, SVector3 &e1, SVector3 &e2, double &edge) const
+    {
+      SVector3 mean(0., 0., 0.);
+      for(const SVector3 &n : _normals) mean += n.unit();
+      edge = 0.;
+      int edges = 0;
+      for(int e : _list.around[v])
+        for(int u : _list.corners[e])
+          if(u >= 0 && u != v) {
+            edge += _origin.distance(_m.points[u]);
+            edges++;
+          }
+      if(mean.norm() == 0. || !edges) return false;
+      mean.normalize();
+      e1 = crossprod(mean, SVector3(1., 0., 0.));
+      if(e1.norm() < 0.5) e1 = crossprod(mean, SVector3(0., 1., 0.));
+      e1.normalize();
+      e2 = crossprod(mean, e1);
+      edge /= edges;
+      return true;
+    }
+
+    // s beats the best so far, and no element falls below the ring's worst
+    // at the start (quadrangles and triangles apart)
+    static bool better(const ringScore &s, const ringScore &start,
+                       const ringScore &best)
+    {
+      return s.min >= start.min - 1e-12 &&
+             s.kappaMin >= start.kappaMin - 1e-12 && s.sum > best.sum + 1e-9;
+    }
+
     // The ring's quality with v at x; min -1 where an element turns over
     // or the ring leaves v's old place behind
     ringScore score(int v, const SPoint3 &x)
