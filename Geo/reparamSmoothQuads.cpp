@@ -18,7 +18,6 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "quadNodeSmoothing.h"
-#include "quadQuality.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceMeshing.h"
 #include "reparamOptimizeAcrossCuts.h"
@@ -213,36 +212,6 @@ namespace {
     }
   }
 
-  // Below this eta a quadrangle has a corner over 162 degrees (three
-  // nodes along a curve, which Blossom paired two triangles across): it is
-  // split into two triangles through that corner, as Gmsh splits those
-  // below 0.1 (tooth, camelhead, armadillo: 1 to 3 each, eta 0.11-0.19)
-  const double splitBelow = 0.2;
-
-  // Splits gf's quadrangles below splitBelow; returns how many
-  std::size_t splitFlatQuadrangles(GFace *gf)
-  {
-    std::vector<MQuadrangle *> kept;
-    std::size_t split = 0;
-    for(MQuadrangle *q : gf->quadrangles) {
-      MVertex *v[4];
-      for(int k = 0; k < 4; k++) v[k] = q->getVertex(k);
-      const SPoint3 p0 = v[0]->point(), p1 = v[1]->point(), p2 = v[2]->point(),
-                    p3 = v[3]->point();
-      if(quadEta(p0, p1, p2, p3) >= splitBelow) {
-        kept.push_back(q);
-        continue;
-      }
-      const int d = betterDiagonal(p0, p1, p2, p3);
-      gf->triangles.push_back(new MTriangle(v[d], v[d + 1], v[d + 2]));
-      gf->triangles.push_back(new MTriangle(v[d + 2], v[(d + 3) % 4], v[d]));
-      delete q;
-      split++;
-    }
-    gf->quadrangles = kept;
-    return split;
-  }
-
   bool smoothGroup(const cutGroup &g)
   {
     const double t0 = TimeOfDay();
@@ -267,16 +236,14 @@ namespace {
     for(const polylineSlide &s : slides) slideFrom.push_back(s.t);
     std::vector<int> landing;
     const quadSmoothingResult r =
-      smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides);
+      smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides, &input);
     std::size_t crossed = 0;
     if(r.moves) {
       writeSlides(m, nodes, slides, slideFrom);
       crossed = writeBack(g, m, nodes, landing, inputFace);
     }
-    std::size_t split = 0;
-    for(GFace *gf : g.faces) split += splitFlatQuadrangles(gf);
     for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
-    if(!r.moves && !split) return false;
+    if(!r.moves) return false;
     for(GFace *gf : g.faces) {
       gf->deleteVertexArrays();
       const faceReport *report = findFaceReport(gf);
@@ -285,12 +252,10 @@ namespace {
     Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
               "(%lu node moves in %d sweeps, %lu of them along curves, %lu "
               "of %lu cut curves crossed): eta min %.3g -> %.3g, mean %.3g "
-              "-> %.3g; %lu quadrangles below eta %g split in two triangles "
-              "(%g s)",
+              "-> %.3g (%g s)",
               g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), r.moves,
               r.sweeps, r.slides, crossed, g.cuts.size(), r.etaMinBefore,
-              r.etaMinAfter, r.etaMeanBefore, r.etaMeanAfter, split, splitBelow,
-              TimeOfDay() - t0);
+              r.etaMinAfter, r.etaMeanBefore, r.etaMeanAfter, TimeOfDay() - t0);
     return true;
   }
 

@@ -4,7 +4,6 @@
 #include <cmath>
 #include "SVector3.h"
 #include "quadQuality.h"
-#include "triangleQuality.h"
 
 double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
                const SPoint3 &p3)
@@ -23,12 +22,3 @@ double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
   return std::max(1. - 2. / M_PI * worst, 0.);
 }
 
-int betterDiagonal(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
-                   const SPoint3 &p3)
-{
-  const double across02 =
-    std::min(triangleKappa(p0, p1, p2), triangleKappa(p0, p2, p3));
-  const double across13 =
-    std::min(triangleKappa(p0, p1, p3), triangleKappa(p1, p2, p3));
-  return across13 > across02 ? 1 : 0;
-}

@@ -13,10 +13,4 @@
 double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
                const SPoint3 &p3);
 
-// The diagonal that cuts the quadrangle into the better pair of triangles
-// (the larger worst kappa): 0 for (p0, p2), 1 for (p1, p3). Through a flat
-// corner, which a triangle on the other diagonal would keep whole
-int betterDiagonal(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
-                   const SPoint3 &p3);
-
 #endif

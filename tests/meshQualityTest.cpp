@@ -34,21 +34,6 @@ TEST(quadQuality, flatOrReflexCornerIsZero)
             0.);
 }
 
-TEST(quadQuality, betterDiagonalGoesThroughTheFlatCorner)
-{
-  // corner 1 at 170 degrees (nodes 0, 1, 2 nearly along a line): cut
-  // through it (1, 3), not across it (0, 2), which leaves a sliver
-  const SPoint3 p0(0., 0., 0.), p1(1., 0.09, 0.), p2(2., 0., 0.),
-    p3(1., -1., 0.);
-  EXPECT_LT(quadEta(p0, p1, p2, p3), 0.2);
-  EXPECT_EQ(betterDiagonal(p0, p1, p2, p3), 1);
-  EXPECT_EQ(betterDiagonal(p1, p2, p3, p0), 0); // the same, renumbered
-  // a square: either (the first)
-  EXPECT_EQ(betterDiagonal(SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(1, 1, 0),
-                           SPoint3(0, 1, 0)),
-            0);
-}
-
 TEST(efficiencyIndex, unitEdgesGiveHundredPercent)
 {
   testTriangulation t = rectangleGrid(4, 4, 4, 4);
