@@ -236,14 +236,11 @@ namespace {
     for(const polylineSlide &s : slides) slideFrom.push_back(s.t);
     std::vector<int> landing;
     const quadSmoothingResult r =
-      smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides, &input);
-    std::size_t crossed = 0;
-    if(r.moves) {
-      writeSlides(m, nodes, slides, slideFrom);
-      crossed = writeBack(g, m, nodes, landing, inputFace);
-    }
+      smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides);
     for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
     if(!r.moves) return false;
+    writeSlides(m, nodes, slides, slideFrom);
+    const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
     for(GFace *gf : g.faces) {
       gf->deleteVertexArrays();
       const faceReport *report = findFaceReport(gf);

@@ -92,8 +92,8 @@ namespace {
   public:
     nodeMover(surfaceMesh &m, const elementList &list,
               const closestTriangleSearch &onInput,
-              const quadSmoothingOptions &o, const surfaceMesh *input)
-      : _m(m), _list(list), _onInput(onInput), _o(o), _input(input)
+              const quadSmoothingOptions &o)
+      : _m(m), _list(list), _onInput(onInput), _o(o)
     {
     }
 
@@ -111,7 +111,6 @@ namespace {
       SVector3 e1, e2;
       double edge;
       if(!tangentFrame(v, e1, e2, edge)) return -1;
-      sidesOnInput(_onInput.closest(_origin, hint).triangle);
       const ringScore start = score(v, _origin);
       ringScore best = start;
       SPoint3 at = _origin;
@@ -125,7 +124,6 @@ namespace {
           const closestTriangleHit hit = _onInput.closest(trial, hint);
           _searches++;
           if(hit.triangle < 0) continue;
-          if(!staysOnItsSide(v, hit.point, hit.triangle)) continue;
           const ringScore s = score(v, hit.point);
           if(!better(s, start, best)) continue;
           best = s;
@@ -185,40 +183,6 @@ namespace {
     }
 
   private:
-    SVector3 inputNormal(int triangle) const
-    {
-      const std::array<int, 3> &t = _input->triangles[triangle];
-      const std::vector<SPoint3> &p = _input->points;
-      return crossprod(SVector3(p[t[0]], p[t[1]]), SVector3(p[t[0]], p[t[2]]));
-    }
-
-    // The side of the input each element of the ring is on, over input
-    // triangle `triangle` (under the node)
-    void sidesOnInput(int triangle)
-    {
-      _sides.clear();
-      if(!_input || triangle < 0) return;
-      const SVector3 n = inputNormal(triangle);
-      for(const SVector3 &e : _normals) _sides.push_back(dot(e, n) > 0.);
-    }
-
-    // Whether the ring, v at x over input triangle `triangle`, keeps those
-    // sides
-    bool staysOnItsSide(int v, const SPoint3 &x, int triangle)
-    {
-      if(_sides.empty()) return true;
-      const SVector3 n = inputNormal(triangle);
-      const SPoint3 old = _m.points[v];
-      _m.points[v] = x;
-      bool same = true;
-      const std::vector<int> &ring = _list.around[v];
-      for(std::size_t k = 0; k < ring.size() && same; k++)
-        same = (dot(normalOf(_list.corners[ring[k]], _m.points), n) > 0.) ==
-               _sides[k];
-      _m.points[v] = old;
-      return same;
-    }
-
     // v's old place and its elements' normals, which moves are measured
     // against
     void startRing(int v)
@@ -298,8 +262,6 @@ namespace {
     std::vector<SVector3> _normals;
     std::size_t _searches = 0;
     bool _byEta = false;
-    const surfaceMesh *_input;
-    std::vector<bool> _sides;
   };
 
   // The active points, those with the worst element around first: where
@@ -338,11 +300,12 @@ namespace {
 
 } // namespace
 
-quadSmoothingResult
-smoothQuadsOnInput(surfaceMesh &m, const std::vector<bool> &movable,
-                   const closestTriangleSearch &onInput,
-                   std::vector<int> &landing, const quadSmoothingOptions &o,
-                   std::vector<polylineSlide> *slides, const surfaceMesh *input)
+quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
+                                       const std::vector<bool> &movable,
+                                       const closestTriangleSearch &onInput,
+                                       std::vector<int> &landing,
+                                       const quadSmoothingOptions &o,
+                                       std::vector<polylineSlide> *slides)
 {
   if(slides && slides->size() != m.points.size()) slides = nullptr;
   auto canMove = [&](int v) {
@@ -353,7 +316,7 @@ smoothQuadsOnInput(surfaceMesh &m, const std::vector<bool> &movable,
   etaOf(m, r.etaMinBefore, r.etaMeanBefore);
   landing.assign(m.points.size(), -1);
   const elementList list(m);
-  nodeMover mover(m, list, onInput, o, input);
+  nodeMover mover(m, list, onInput, o);
   std::vector<bool> active(m.points.size(), false);
   for(std::size_t v = 0; v < m.points.size(); v++) active[v] = canMove((int)v);
   for(; r.sweeps < o.sweeps; r.sweeps++) {

@@ -72,16 +72,12 @@ struct quadSmoothingResult {
 // triangle point i was moved onto (-1: not moved). eta over m's
 // quadrangles, before and after. The points with a polyline in `slides`
 // (when not empty, one per point) slide along it instead (its t updated,
-// landing left at -1). With `input` (the triangulation onInput searches),
-// a move also keeps each element around on the side of the input it was on
-// (its normal against the input's under the node's new place): on a thin
-// CAD wall the closest input point may lie on the other side
+// landing left at -1)
 quadSmoothingResult
 smoothQuadsOnInput(surfaceMesh &m, const std::vector<bool> &movable,
                    const closestTriangleSearch &onInput,
                    std::vector<int> &landing,
                    const quadSmoothingOptions &o = {},
-                   std::vector<polylineSlide> *slides = nullptr,
-                   const surfaceMesh *input = nullptr);
+                   std::vector<polylineSlide> *slides = nullptr);
 
 #endif

@@ -21,4 +21,3 @@ double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
   }
   return std::max(1. - 2. / M_PI * worst, 0.);
 }
-
