@@ -196,7 +196,9 @@ namespace {
       return found;
     }
     checkedMap result = runMapChain(patch, steps, repair);
-    if(checkingPatch) {
+    // only the layout's (quiet) tries: it drops them when it starts again;
+    // Gmsh's own split loop (Mesh.CompoundLayout = 0) would pile them up
+    if(checkingPatch && quiet) {
       key.result = result;
       cache.push_back(std::move(key));
     }
