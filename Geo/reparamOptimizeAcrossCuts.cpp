@@ -16,6 +16,7 @@
 #include "meshFidelity.h"
 #include "reparamCurveMesh.h"
 #include "reparamInputMesh.h"
+#include "reparamNoiseFaces.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamOptions.h"
@@ -83,10 +84,11 @@ namespace {
   class groupWriter {
   public:
     groupWriter(const cutGroup &g, const optimizableMesh &m,
-                const std::vector<MVertex *> &nodes,
+                const std::vector<MVertex *> &nodes, const surfaceMesh &input,
                 const std::vector<int> &inputFace,
                 const closestTriangleSearch &onInput)
-      : _g(g), _m(m), _nodes(nodes), _inputFace(inputFace), _onInput(onInput)
+      : _g(g), _m(m), _nodes(nodes), _input(input), _inputFace(inputFace),
+        _onInput(onInput)
     {
     }
 
@@ -230,6 +232,7 @@ namespace {
           changed = true;
         }
       }
+      giveEmptyFacesATriangle(triangleFace);
       std::vector<std::vector<MTriangle *> > byFace(_g.faces.size());
       for(std::size_t t = 0; t < _m.triangles.size(); t++)
         byFace[triangleFace[t]].push_back(triangles[t]);
@@ -238,6 +241,45 @@ namespace {
       for(std::size_t f = 0; f < _g.faces.size(); f++)
         _g.faces[f]->triangles = byFace[f];
       return triangleFace;
+    }
+
+    // A face none of whose triangles is left, even as changed (a face
+    // narrower than the mesh size, Geo/reparamNoiseFaces.h, whose slivers
+    // were collapsed away), takes the triangle nearest to the centre of its
+    // input from a face that has others: no face of the model goes unmeshed
+    void giveEmptyFacesATriangle(std::vector<int> &triangleFace) const
+    {
+      std::vector<std::size_t> count(_g.faces.size(), 0);
+      for(int f : triangleFace) count[f]++;
+      for(std::size_t f = 0; f < _g.faces.size(); f++) {
+        if(count[f]) continue;
+        SPoint3 centre(0., 0., 0.);
+        std::size_t n = 0;
+        for(std::size_t t = 0; t < _input.triangles.size(); t++)
+          if(_inputFace[t] == (int)f)
+            for(int k : _input.triangles[t]) {
+              centre += _input.points[k];
+              n++;
+            }
+        if(!n) continue;
+        centre *= 1. / n;
+        int nearest = -1;
+        double best = 1e300;
+        for(std::size_t t = 0; t < _m.triangles.size(); t++) {
+          if(count[triangleFace[t]] < 2) continue;
+          SPoint3 c(0., 0., 0.);
+          for(int k : _m.triangles[t]) c += _m.points[k];
+          const double d = centre.distance(c * (1. / 3.));
+          if(d < best) {
+            best = d;
+            nearest = (int)t;
+          }
+        }
+        if(nearest < 0) continue;
+        count[triangleFace[nearest]]--;
+        triangleFace[nearest] = (int)f;
+        count[f]++;
+      }
     }
 
     // A cut whose segments are not all edges of the new mesh any more keeps
@@ -263,6 +305,7 @@ namespace {
     const cutGroup &_g;
     const optimizableMesh &_m;
     const std::vector<MVertex *> &_nodes;
+    const surfaceMesh &_input;
     const std::vector<int> &_inputFace;
     const closestTriangleSearch &_onInput;
     std::map<GEntity *, std::set<MVertex *> > _leaving;
@@ -304,6 +347,7 @@ namespace {
       o.againstAfter = against[f];
       o.reversed = false;
       o.acrossCuts = true;
+      o.group = g.faces[0]->tag();
       o.countTaken = false;
       o.elements = gf->getNumMeshElements();
       o.firstElement = o.elements ? gf->getMeshElement(0) : nullptr;
@@ -332,7 +376,13 @@ namespace {
     return true;
   }
 
-  bool optimizeGroup(const cutGroup &g)
+  // What optimizeGroup did: nothing to change, changed, or refused (the
+  // group's worst triangle would be worse)
+  enum class groupResult { unchanged, changed, refused };
+
+  // refuseWorse: leave the meshes as they are if the worst triangle gets
+  // worse
+  groupResult optimizeGroup(const cutGroup &g, bool refuseWorse)
   {
     const double t0 = TimeOfDay();
     std::vector<int> inputFace;
@@ -374,9 +424,15 @@ namespace {
        !r.cavities) {
       Msg::Debug("Reparam: surfaces %s: nothing to change across their cuts",
                  tagList(g.faces).c_str());
-      return false;
+      return groupResult::unchanged;
     }
-    groupWriter writer(g, m, nodes, inputFace, onInput);
+    if(refuseWorse && r.minAfter < r.minBefore) {
+      Msg::Info("Reparam: surfaces %s: optimization across their curves "
+                "refused (kappa min %.3g -> %.3g)",
+                tagList(g.faces).c_str(), r.minBefore, r.minAfter);
+      return groupResult::refused;
+    }
+    groupWriter writer(g, m, nodes, input, inputFace, onInput);
     triangleFace = writer.write();
     const double seconds = TimeOfDay() - t0;
     recordGroup(g, before, r, m, triangleFace, seconds);
@@ -390,15 +446,15 @@ namespace {
               r.minBefore, r.minAfter, r.belowBefore, r.belowAfter, o.target,
               r.againstBefore, r.againstAfter, r.inserted, r.splits,
               r.collapses, r.cavities, r.flips, r.moves, seconds);
-    return true;
+    return groupResult::changed;
   }
 
 } // namespace
 
-std::vector<cutGroup> facesJoinedBy(GModel *m,
-                                    const std::function<bool(GFace *)> &member,
-                                    const std::function<bool(GEdge *)> &joins,
-                                    bool alone)
+std::vector<cutGroup>
+facesJoinedBy(GModel *m, const std::function<bool(GFace *)> &member,
+              const std::function<bool(GEdge *)> &joins, bool alone,
+              const std::function<bool(GEdge *)> &crossable)
 {
   std::vector<GFace *> faces;
   std::map<GFace *, int> index;
@@ -421,7 +477,7 @@ std::vector<cutGroup> facesJoinedBy(GModel *m,
     const int a = index[sides[0]], b = index[sides[1]];
     parent[rootOf(parent, a)] = rootOf(parent, b);
     joined[a] = joined[b] = true;
-    if(reparamIsCrossableCurve(ge)) cuts.push_back(ge);
+    if(crossable(ge)) cuts.push_back(ge);
   }
   std::map<int, cutGroup> groups;
   for(std::size_t f = 0; f < faces.size(); f++)
@@ -434,11 +490,15 @@ std::vector<cutGroup> facesJoinedBy(GModel *m,
   return list;
 }
 
-std::vector<cutGroup> facesJoinedByCuts(GModel *m)
+std::vector<cutGroup> facesJoinedByCuts(GModel *m,
+                                        const std::set<GEdge *> &noiseCurves)
 {
+  auto crossable = [&noiseCurves](GEdge *ge) {
+    return noiseCurves.count(ge) || reparamIsCrossableCurve(ge);
+  };
   return facesJoinedBy(
-    m, [](GFace *gf) { return reparamOptimizableFace(gf); },
-    [](GEdge *ge) { return reparamIsCrossableCurve(ge); }, false);
+    m, [](GFace *gf) { return reparamOptimizableFace(gf); }, crossable, false,
+    crossable);
 }
 
 int reparamOptimizeMeshedModel(GModel *m)
@@ -448,8 +508,23 @@ int reparamOptimizeMeshedModel(GModel *m)
      getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;
   int changed = 0;
-  for(const cutGroup &g : facesJoinedByCuts(m))
-    if(!alreadyOptimized(g)) changed += optimizeGroup(g);
+  const std::set<GEdge *> noise = reparamNoiseFaceCurves(m);
+  for(const cutGroup &g : facesJoinedByCuts(m, noise)) {
+    if(alreadyOptimized(g)) continue;
+    bool crossesNoise = false;
+    for(GEdge *ge : g.cuts) crossesNoise = crossesNoise || noise.count(ge);
+    // across the curves of a noise face, only if the worst triangle gains
+    // (gmsh2x_pelvis_tlem2: a noise face's curves joined to a group of cut
+    // parts took its kappa min 0.028 -> 0.004, 0.48 without them)
+    const groupResult r = optimizeGroup(g, crossesNoise);
+    if(r == groupResult::changed) changed++;
+    if(r != groupResult::refused) continue;
+    std::set<GFace *> members(g.faces.begin(), g.faces.end());
+    for(const cutGroup &part : facesJoinedByCuts(m, {}))
+      if(members.count(part.faces[0]) &&
+         optimizeGroup(part, false) == groupResult::changed)
+        changed++;
+  }
   // then the nodes of the curves no optimizer moved
   if(reparamSlideCurveNodes(m)) changed++;
   // and the faces recombined into quadrangles

@@ -19,6 +19,7 @@
 #define REPARAM_OPTIMIZE_ACROSS_CUTS_H
 
 #include <functional>
+#include <set>
 #include <vector>
 
 class GEdge;
@@ -33,16 +34,20 @@ struct cutGroup {
 
 // The faces of m that `member` accepts, joined into groups by the curves
 // between two of them that `joins` accepts; each group with those of its
-// curves that are smooth cuts (Geo/reparamCurveMesh.h). A face joined to
-// none is a group of its own if `alone`, else in no group
-std::vector<cutGroup> facesJoinedBy(GModel *m,
-                                    const std::function<bool(GFace *)> &member,
-                                    const std::function<bool(GEdge *)> &joins,
-                                    bool alone);
+// curves that `crossable` accepts (the mesh may cross them: smooth cuts,
+// Geo/reparamCurveMesh.h). A face joined to none is a group of its own if
+// `alone`, else in no group
+std::vector<cutGroup>
+facesJoinedBy(GModel *m, const std::function<bool(GFace *)> &member,
+              const std::function<bool(GEdge *)> &joins, bool alone,
+              const std::function<bool(GEdge *)> &crossable);
 
 // The groups of m's triangle-meshed discrete faces Reparam parametrized
-// joined by smooth cut curves (each group has a cut and two faces or more)
-std::vector<cutGroup> facesJoinedByCuts(GModel *m);
+// joined by smooth cut curves or by noiseCurves, the curves of faces that
+// are noise at the mesh scale (Geo/reparamNoiseFaces.h); each group has a
+// crossable curve and two faces or more
+std::vector<cutGroup> facesJoinedByCuts(GModel *m,
+                                        const std::set<GEdge *> &noiseCurves);
 
 // Optimizes the meshes of each group as one, unless Mesh.CompoundOptimize
 // is 0 or the group's meshes were left by this already; logs what it did

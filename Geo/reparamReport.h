@@ -58,6 +58,7 @@ struct optimizationRecord {
   // made by the optimization of the faces a patch was cut into, together
   // (Geo/reparamOptimizeAcrossCuts.h)
   bool acrossCuts = false;
+  int group = 0; // then: the tag of the first face of that group
   bool countTaken = false; // by takeOptimizationCount
   // the mesh it left, to tell whether it is still gf's
   std::size_t elements = 0;

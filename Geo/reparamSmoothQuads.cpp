@@ -39,7 +39,8 @@ namespace {
         return !gf->quadrangles.empty() &&
                reparamRecombineWithParametrization(gf);
       },
-      [](GEdge *) { return true; }, true);
+      [](GEdge *) { return true; }, true,
+      [](GEdge *ge) { return reparamIsCrossableCurve(ge); });
   }
 
   // The group's elements as one mesh; nodes[i]: point i's node

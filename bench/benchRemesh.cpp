@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <vector>
 #include "GFace.h"
@@ -43,7 +44,6 @@
 #include "gmsh.h"
 #include "meshFidelity.h"
 #include "faceQuality.h"
-#include "reparamOptimizeAcrossCuts.h"
 #include "reparamReport.h"
 
 namespace {
@@ -74,19 +74,21 @@ namespace {
     return against.size();
   }
 
-  // Each face against its own input, but the faces joined by crossed cuts
-  // (Mesh.CompoundOptimize moves triangles across them) against their
-  // inputs together
+  // Each face against its own input, but the faces optimized together
+  // across their curves (Mesh.CompoundOptimize moves triangles across them,
+  // Geo/reparamOptimizeAcrossCuts.h) against their inputs together
   std::size_t countInvertedElements(const std::vector<GFace *> &faces)
   {
-    std::set<GFace *> meshed(faces.begin(), faces.end()), grouped;
+    std::set<GFace *> grouped;
+    std::map<int, std::vector<GFace *> > groups;
+    for(GFace *gf : faces) {
+      const optimizationRecord *o = findOptimization(gf);
+      if(o && o->acrossCuts) groups[o->group].push_back(gf);
+    }
     std::size_t inverted = 0;
-    for(const cutGroup &g : facesJoinedByCuts(GModel::current())) {
-      std::vector<GFace *> members;
-      for(GFace *gf : g.faces)
-        if(meshed.count(gf)) members.push_back(gf);
-      grouped.insert(members.begin(), members.end());
-      inverted += countInvertedTogether(members);
+    for(const auto &g : groups) {
+      grouped.insert(g.second.begin(), g.second.end());
+      inverted += countInvertedTogether(g.second);
     }
     for(GFace *gf : faces) {
       if(grouped.count(gf)) continue;

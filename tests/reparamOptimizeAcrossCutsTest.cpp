@@ -78,7 +78,7 @@ namespace {
   {
     sphereMesh s;
     GModel *m = GModel::current();
-    for(const cutGroup &g : facesJoinedByCuts(m)) {
+    for(const cutGroup &g : facesJoinedByCuts(m, {})) {
       s.faces += g.faces.size();
       s.cuts += g.cuts.size();
       for(GEdge *ge : g.cuts) s.crossedCuts += ge->lines.empty();
@@ -108,7 +108,7 @@ namespace {
   // slivers on both sides of the cut, that only a change across it can mend
   void bunchCutNodes()
   {
-    for(const cutGroup &g : facesJoinedByCuts(GModel::current()))
+    for(const cutGroup &g : facesJoinedByCuts(GModel::current(), {}))
       for(GEdge *ge : g.cuts) {
         std::vector<std::pair<double, MVertex *> > nodes;
         for(MVertex *v : ge->mesh_vertices) {
@@ -168,5 +168,5 @@ TEST(optimizeAcrossCuts, aPatchCutIntoNoDiskHasNoGroup)
 {
   // a hemisphere is one disk: no cut, nothing to join
   remeshWithRecipe(hemisphere(12, 48), 0.1);
-  EXPECT_TRUE(facesJoinedByCuts(GModel::current()).empty());
+  EXPECT_TRUE(facesJoinedByCuts(GModel::current(), {}).empty());
 }
