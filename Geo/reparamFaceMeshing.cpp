@@ -3,10 +3,12 @@
 #include "reparamCreaseCurves.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamFaceMeshing.h"
+#include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
 #include "Context.h"
 #include "GFace.h"
+#include "GModel.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
 
@@ -64,4 +66,21 @@ bool reparamRecombineWithParametrization(GFace *gf)
 {
   const parametrizationRecord *record = findParametrization(gf);
   return record && record->map > 0 && gf->haveParametrization();
+}
+
+bool reparamMeshInParallel(GModel *m)
+{
+  if(Msg::GetMaxThreads() < 2 ||
+     getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+    return true;
+  bool discrete = false;
+  for(auto it = m->firstFace(); it != m->lastFace() && !discrete; ++it)
+    discrete = (*it)->geomType() == GEntity::DiscreteSurface;
+  for(auto it = m->firstEdge(); it != m->lastEdge() && !discrete; ++it)
+    discrete = (*it)->geomType() == GEntity::DiscreteCurve;
+  if(discrete)
+    Msg::Info("Reparam: discrete curves and surfaces meshed on one thread "
+              "(General.NumThreads = %d: Reparam's layout uses them)",
+              Msg::GetMaxThreads());
+  return !discrete;
 }

@@ -277,6 +277,9 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   modelTriangulation model = collectTriangles(gm, lines);
   if(model.triangles.empty()) return 0;
   layoutParameters parameters = reparamLayoutParameters(model.mesh);
+  // General.NumThreads (Gmsh built with OpenMP); the maps and their checks
+  // keep their state per thread
+  parameters.threads = std::max(1, Msg::GetMaxThreads());
   const int maxTriangles = CTX::instance()->mesh.reparamMaxTriangles;
   partVerifier verify = [&model, maxTriangles](const std::vector<int> &part) {
     // Gmsh's own bound on a patch, Mesh.ReparamMaxTriangles
@@ -306,13 +309,17 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "
               "because %s",
               s.depth, s.triangles, s.parts, s.reason.c_str());
-  Msg::Info("Reparam: layout of %lu triangles: %d feature patches, %d noise "
-            "patches merged (size %g), %d splits, %d patches (clean %.3g s, "
-            "split and verify %.3g s, total %.3g s)",
-            model.triangles.size(), layout.featurePatches, layout.mergedNoise,
-            8. * parameters.noiseWidth, (int)layout.splits.size(),
-            layout.numPatches, layout.cleanTime, layout.splitTime,
-            TimeOfDay() - t0);
+  Msg::Info(
+    "Reparam: layout of %lu triangles: %d feature patches, %d noise "
+    "patches merged (size %g), %d splits, %d patches (clean %.3g s, "
+    "split and verify %.3g s%s, total %.3g s)",
+    model.triangles.size(), layout.featurePatches, layout.mergedNoise,
+    8. * parameters.noiseWidth, (int)layout.splits.size(), layout.numPatches,
+    layout.cleanTime, layout.splitTime,
+    parameters.threads > 1 ?
+      (" on " + std::to_string(parameters.threads) + " threads").c_str() :
+      "",
+    TimeOfDay() - t0);
   for(const auto &u : layout.unverified)
     // CreateGeometry then keeps its input triangles, with a warning naming
     // the surface

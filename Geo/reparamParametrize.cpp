@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <mutex>
 #include <string>
 #include <unordered_map>
 #include "GEntity.h"
@@ -35,17 +36,19 @@
 
 namespace {
 
+  // Per thread: the patch layout verifies its parts on several threads
+  // (General.NumThreads, Mesh/patchLayout.h).
   // Set while ClassifySurfaces asks whether a patch can be parametrized
   // (reparamCheckParametrizable, the patch layout): a failure there splits
   // the patch, it is not an error of the model
-  bool checkingPatch = false;
+  thread_local bool checkingPatch = false;
   // Set while the patch layout tries a part: no log at all (a layout tries
   // hundreds of parts), the reason of a failure kept for its own message
-  bool quiet = false;
+  thread_local bool quiet = false;
   // Set while a discrete face's CreateGeometry parametrizes it: a failure
   // is an Info, the safety net's warning gives it (Geo/reparamInputMesh)
-  GFace *creatingFace = nullptr;
-  std::string lastFailure;
+  thread_local GFace *creatingFace = nullptr;
+  thread_local std::string lastFailure;
 
   void failure(const char *format, ...)
   {
@@ -152,6 +155,12 @@ namespace {
     return cache;
   }
 
+  std::mutex &mapCacheMutex()
+  {
+    static std::mutex m;
+    return m;
+  }
+
   // FNV-1a over the patch's bytes, from two offsets
   void hashOf(const discretePatch &patch, std::uint64_t hash[2])
   {
@@ -183,31 +192,39 @@ namespace {
     hashOf(patch, key.hash);
     key.choice = choice;
     key.repair = repair;
-    std::vector<cachedMap> &cache = mapCache();
-    for(std::size_t i = 0; i < cache.size(); i++) {
-      const cachedMap &c = cache[i];
-      if(c.points != key.points || c.triangles != key.triangles ||
-         c.hash[0] != key.hash[0] || c.hash[1] != key.hash[1] ||
-         c.choice != choice || c.repair != repair)
-        continue;
-      checkedMap found = std::move(cache[i].result);
-      cache.erase(cache.begin() + i);
-      fromLayout = true;
-      return found;
+    {
+      std::lock_guard<std::mutex> lock(mapCacheMutex());
+      std::vector<cachedMap> &cache = mapCache();
+      for(std::size_t i = 0; i < cache.size(); i++) {
+        const cachedMap &c = cache[i];
+        if(c.points != key.points || c.triangles != key.triangles ||
+           c.hash[0] != key.hash[0] || c.hash[1] != key.hash[1] ||
+           c.choice != choice || c.repair != repair)
+          continue;
+        checkedMap found = std::move(cache[i].result);
+        cache.erase(cache.begin() + i);
+        fromLayout = true;
+        return found;
+      }
     }
     checkedMap result = runMapChain(patch, steps, repair);
     // only the layout's (quiet) tries: it drops them when it starts again;
     // Gmsh's own split loop (Mesh.CompoundLayout = 0) would pile them up
     if(checkingPatch && quiet) {
       key.result = result;
-      cache.push_back(std::move(key));
+      std::lock_guard<std::mutex> lock(mapCacheMutex());
+      mapCache().push_back(std::move(key));
     }
     return result;
   }
 
 } // namespace
 
-void reparamForgetLayoutMaps() { mapCache().clear(); }
+void reparamForgetLayoutMaps()
+{
+  std::lock_guard<std::mutex> lock(mapCacheMutex());
+  mapCache().clear();
+}
 
 int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<MVertex *> &nodes,
@@ -215,7 +232,8 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<SPoint3> &stl_vertices_xyz,
                                   std::vector<int> &stl_triangles)
 {
-  creatingFace = reparamTakeFaceInCreation();
+  // (the layout's parts, on several threads, belong to no face)
+  creatingFace = quiet ? nullptr : reparamTakeFaceInCreation();
   // the curves are made once faces get their geometry: the layout's
   // junctions are of no more use (and their nodes may go)
   if(creatingFace) reparamForgetJunctions();

@@ -28,6 +28,13 @@ namespace {
     return r;
   }
 
+  // Another thread's insertion or removal leaves a record found in place
+  std::mutex &parametrizationsMutex()
+  {
+    static std::mutex m;
+    return m;
+  }
+
   std::mutex &reportsMutex()
   {
     static std::mutex m;
@@ -51,21 +58,24 @@ namespace {
 void recordParametrization(const std::vector<SPoint2> &uv,
                            const parametrizationRecord *record)
 {
+  // the layout verifies its parts on several threads, each with its own uv
+  std::lock_guard<std::mutex> lock(parametrizationsMutex());
   if(record)
     parametrizations()[&uv] = *record;
   else
     parametrizations().erase(&uv);
 }
 
-const parametrizationRecord *
-findParametrization(const std::vector<SPoint2> &uv)
+const parametrizationRecord *findParametrization(const std::vector<SPoint2> &uv)
 {
+  std::lock_guard<std::mutex> lock(parametrizationsMutex());
   auto it = parametrizations().find(&uv);
   return it == parametrizations().end() ? nullptr : &it->second;
 }
 
 const parametrizationRecord *findParametrization(const GFace *gf)
 {
+  std::lock_guard<std::mutex> lock(parametrizationsMutex());
   auto it = parametrizations().find(&gf->stl_vertices_uv);
   if(it == parametrizations().end()) return nullptr;
   // a face created where a deleted one was, with a parametrization read
@@ -161,9 +171,10 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
     r.fidelity.elements = r.output.numElements();
     r.fidelity.diagonal = r.inputBox.diag();
     if(optimization && gf->quadrangles.empty())
-      r.fidelity.inverted = optimization->reversed ?
-                              gf->triangles.size() - optimization->againstAfter :
-                              optimization->againstAfter;
+      r.fidelity.inverted =
+        optimization->reversed ?
+          gf->triangles.size() - optimization->againstAfter :
+          optimization->againstAfter;
     else
       r.fidelity.inverted = countInverted(r.input, r.output);
   }
@@ -237,7 +248,8 @@ void reparamReportMeshedModel(GModel *m)
   if(reports.empty() && missing.empty() && kept.empty()) return;
   if(!kept.empty()) {
     std::string list;
-    for(int tag : kept) list += (list.empty() ? "" : ", ") + std::to_string(tag);
+    for(int tag : kept)
+      list += (list.empty() ? "" : ", ") + std::to_string(tag);
     Msg::Info("Reparam: %lu surface%s meshed with their input triangles: %s",
               kept.size(), kept.size() > 1 ? "s" : "", list.c_str());
   }

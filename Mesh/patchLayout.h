@@ -38,6 +38,10 @@ struct layoutParameters {
   double noiseWidthMaxArea = 0.;
   // Cuts of one feature patch, at most this deep (each halves it or so)
   int maxDepth = 48;
+  // Parts verified at once, each on its own thread (the verifier must then
+  // be safe to call from several threads); the result is the same for any
+  // number
+  int threads = 1;
 };
 
 // What the caller's verification says of a part (triangle indices of the
@@ -89,7 +93,8 @@ std::vector<int> featurePatches(const layoutMesh &mesh,
                                 const triangleAdjacency &adjacency,
                                 const std::vector<char> &featureEdge,
                                 int &numPatches);
-int mergeNoisePatches(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+int mergeNoisePatches(const layoutMesh &mesh,
+                      const triangleAdjacency &adjacency,
                       const layoutParameters &parameters,
                       std::vector<int> &patch, int &numPatches);
 

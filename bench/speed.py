@@ -9,6 +9,7 @@ import resource
 import subprocess
 import sys
 import tempfile
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import coverage  # noqa: E402
@@ -29,19 +30,26 @@ def stage_seconds(log):
     for name, line in STAGES:
         m = re.search(re.escape(line) + r".*?CPU ([0-9.eE+-]+)s", text)
         out[name] = float(m.group(1)) if m else None
+    m = re.search(r"split and verify ([0-9.eE+-]+) s", text)
+    out["layout"] = float(m.group(1)) if m else None
     m = re.search(r"Reparam: total +\d+ surf\.\s+(.*)", text)
     out["triangles"] = int(m.group(1).split()[7]) if m else None
     return out
 
 
-def run_gmsh(gmsh, stl, map_value, size, timeout):
+def run_gmsh(gmsh, stl, map_value, size, timeout, threads=1):
+    """(status, CPU, stages); stages["wall"]: the process's wall seconds."""
     with tempfile.TemporaryDirectory(prefix="reparam-speed-") as folder:
         geo = os.path.join(folder, "recipe.geo")
         with open(geo, "w") as f:
+            f.write("General.NumThreads = %d;\n" % threads)
             f.write(coverage.recipe(stl, map_value, size, folder))
         log = os.path.join(folder, "gmsh.log")
+        start = time.time()
         status, cpu = coverage.run_gmsh(gmsh, geo, log, timeout)
+        wall = time.time() - start
         stages = stage_seconds(log)
+        stages["wall"] = wall
         if stages["triangles"] is None:
             try:
                 out = coverage.read_msh_surface(os.path.join(folder, "out.msh"))
@@ -52,16 +60,19 @@ def run_gmsh(gmsh, stl, map_value, size, timeout):
 
 
 def run_cgal(cgal, stl, size, timeout):
+    """(status, CPU, triangles, wall)"""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.time()
     try:
         out = subprocess.run([cgal, stl, "%.9g" % size], capture_output=True,
                              text=True, timeout=timeout).stdout
     except subprocess.TimeoutExpired:
-        return "timeout", None, None
+        return "timeout", None, None, None
+    wall = time.time() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     m = re.search(r"cgal triangles (\d+)", out)
-    return None, cpu, int(m.group(1)) if m else None
+    return None, cpu, int(m.group(1)) if m else None, wall
 
 
 def text(value, form="%.2f"):
@@ -95,13 +106,17 @@ def main():
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
           "---:|---:|")
     total = {"reparam": 0.0, "stock": 0.0, "cgal": 0.0}
+    walls = []
     for stl in a.meshes:
         triangles, area = coverage.read_stl(stl)
         size = coverage.mesh_size(area, len(triangles))
         rs, rcpu, rst = run_gmsh(a.gmsh, stl, 6, size, a.timeout)
         ss, scpu, sst = run_gmsh(a.gmsh, stl, 0, size, a.timeout)
-        cs, ccpu, ctri = (run_cgal(a.cgal, stl, size, a.timeout)
-                          if a.cgal else (None, None, None))
+        cs, ccpu, ctri, cwall = (run_cgal(a.cgal, stl, size, a.timeout)
+                                 if a.cgal else (None, None, None, None))
+        ts, tcpu, tst = run_gmsh(a.gmsh, stl, 6, size, a.timeout, threads=2)
+        tst["cpu"] = tcpu
+        walls.append((coverage.mesh_name(stl), rst, tst, cwall))
         total["reparam"] += rcpu
         total["stock"] += scpu
         total["cgal"] += ccpu or 0.0
@@ -119,6 +134,21 @@ def main():
                   text(ctri, "%d")))
     print("\nTotal CPU: Reparam %.1f s, stock %.1f s, CGAL %.1f s."
           % (total["reparam"], total["stock"], total["cgal"]))
+    print("\nWall seconds, Reparam with General.NumThreads = 1 and 2 (Gmsh "
+          "built with OpenMP: the layout verifies its parts on both threads; "
+          "Reparam's curves and surfaces are meshed on one), CGAL (one "
+          "thread), and Reparam's CPU with 2 threads:\n")
+    print("| mesh | Reparam wall, 1 thread | 2 threads | 1 / 2 | layout "
+          "(split and verify), 1 thread | 2 threads | CPU, 2 threads | CGAL "
+          "wall | Reparam 2 threads / CGAL (wall) |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for name, one, two, cgal_wall in walls:
+        print("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            name, text(one["wall"]), text(two["wall"]),
+            text(one["wall"] / two["wall"] if two["wall"] else None),
+            text(one["layout"], "%.3g"), text(two["layout"], "%.3g"),
+            text(two["cpu"]), text(cgal_wall),
+            text(two["wall"] / cgal_wall if cgal_wall else None, "%.1f")))
 
 
 if __name__ == "__main__":

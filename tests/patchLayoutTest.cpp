@@ -3,6 +3,7 @@
 // and the layout always ends
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <gtest/gtest.h>
@@ -33,7 +34,7 @@ namespace {
     gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
     testTriangulation t{mesh.points, mesh.triangles};
     gmshTriangulation g(t);
-    int calls = 0;
+    std::atomic<int> calls(0); // on several threads with parameters.threads
     partVerifier verify = [&](const std::vector<int> &part) {
       calls++;
       std::vector<MTriangle *> tris;
@@ -72,8 +73,8 @@ namespace {
       }
       discretePatch patch;
       reparamError err = makeDiscretePatch(points, tris, patch);
-      EXPECT_TRUE(err.ok()) << err.what() << " (" << part.size()
-                            << " triangles)";
+      EXPECT_TRUE(err.ok())
+        << err.what() << " (" << part.size() << " triangles)";
     }
     EXPECT_TRUE(r.unverified.empty());
   }
@@ -129,8 +130,7 @@ TEST(patchLayout, noisePatchIsMergedAndItsPinchGoesWithIt)
   EXPECT_GE(r.numPatches, 3);
   EXPECT_LE(r.numPatches, 5);
   EXPECT_FALSE(r.splits.empty());
-  EXPECT_NE(r.splits[0].reason.find("several boundary fans"),
-            std::string::npos)
+  EXPECT_NE(r.splits[0].reason.find("several boundary fans"), std::string::npos)
     << r.splits[0].reason;
   expectDiskPatches(mesh, r);
 }
@@ -165,6 +165,34 @@ TEST(patchLayout, closedSurfacesAreCutIntoDisks)
 {
   expectCutIntoFewDisks(sphere(24, 12), 8);
   expectCutIntoFewDisks(torus(32, 12, 2., 0.6), 8);
+}
+
+TEST(patchLayout, twoThreadsGiveTheSameLayout)
+{
+  // parts verified on two threads at once (General.NumThreads = 2): the
+  // same patches, numbered alike, and the same splits in the same order
+  for(const testTriangulation &t :
+      {sphere(24, 12), torus(32, 12, 2., 0.6), hemisphere(12, 48)}) {
+    layoutMesh mesh = meshOf(t);
+    layoutParameters one, two;
+    two.threads = 2;
+    int verifiedOne = 0, verifiedTwo = 0;
+    const layoutResult a = layoutWithMaps(mesh, one, &verifiedOne);
+    const layoutResult b = layoutWithMaps(mesh, two, &verifiedTwo);
+    EXPECT_EQ(a.patch, b.patch);
+    EXPECT_EQ(a.numPatches, b.numPatches);
+    EXPECT_EQ(verifiedOne, verifiedTwo);
+    ASSERT_EQ(a.splits.size(), b.splits.size());
+    for(std::size_t i = 0; i < a.splits.size(); i++) {
+      EXPECT_EQ(a.splits[i].triangles, b.splits[i].triangles);
+      EXPECT_EQ(a.splits[i].depth, b.splits[i].depth);
+      EXPECT_EQ(a.splits[i].reason, b.splits[i].reason);
+    }
+    EXPECT_EQ(a.cutEdges, b.cutEdges);
+  }
+  // the sphere and the torus are cut
+  EXPECT_GE(
+    layoutWithMaps(meshOf(sphere(24, 12)), layoutParameters()).numPatches, 2);
 }
 
 TEST(patchLayout, twoTriangleClosedPiecesEnd)
@@ -224,11 +252,13 @@ TEST(patchLayout, coarseCadFacesAreNotNoise)
   for(const auto &q : quads) {
     mesh.triangles.push_back({q[0], q[1], q[2]});
     mesh.triangles.push_back({q[0], q[2], q[3]});
-    for(int k = 0; k < 4; k++) mesh.featureEdges.push_back({q[k], q[(k + 1) % 4]});
+    for(int k = 0; k < 4; k++)
+      mesh.featureEdges.push_back({q[k], q[(k + 1) % 4]});
   }
   triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
   std::vector<char> feature(adjacency.edges.size(), 0);
-  for(const auto &f : mesh.featureEdges) feature[adjacency.find(f[0], f[1])] = 1;
+  for(const auto &f : mesh.featureEdges)
+    feature[adjacency.find(f[0], f[1])] = 1;
   int n = 0;
   std::vector<int> patch = featurePatches(mesh, adjacency, feature, n);
   EXPECT_EQ(n, 6);
@@ -324,7 +354,8 @@ TEST(patchLayout, largenessComparesTheAreaWithTheDiskOfTheBoundary)
   // tube closed at one end (a sock) much more: it is cut
   auto largeness = [](const testTriangulation &t) {
     std::vector<int> nodes;
-    for(const auto &tri : t.triangles) nodes.insert(nodes.end(), tri.begin(), tri.end());
+    for(const auto &tri : t.triangles)
+      nodes.insert(nodes.end(), tri.begin(), tri.end());
     return boundaryLargeness(t.points, nodes);
   };
   EXPECT_NEAR(largeness(polarDisk(20, 200)), 1., 1e-3);
