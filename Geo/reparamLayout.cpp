@@ -284,8 +284,10 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   partVerifier verify = [&model, maxTriangles](const std::vector<int> &part) {
     // Gmsh's own bound on a patch, Mesh.ReparamMaxTriangles
     if(maxTriangles > 1 && (int)part.size() > maxTriangles)
-      return partCheck{false, "it has more than Mesh.ReparamMaxTriangles = " +
-                                std::to_string(maxTriangles) + " triangles"};
+      return partCheck{false,
+                       "it has more than Mesh.ReparamMaxTriangles = " +
+                         std::to_string(maxTriangles) + " triangles",
+                       true};
     std::vector<MTriangle *> t(part.size());
     for(std::size_t i = 0; i < part.size(); i++)
       t[i] = model.triangles[part[i]];

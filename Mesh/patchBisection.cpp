@@ -93,22 +93,102 @@ namespace {
     return x;
   }
 
+  // Clusters of about `size` nodes of g grown breadth first (cluster[i] of
+  // node i); returns their number
+  int growClusters(const dualGraph &g, std::size_t n, std::size_t size,
+                   std::vector<int> &cluster)
+  {
+    cluster.assign(n, -1);
+    int count = 0;
+    std::vector<int> queue;
+    for(std::size_t seed = 0; seed < n; seed++) {
+      if(cluster[seed] >= 0) continue;
+      queue.assign(1, (int)seed);
+      cluster[seed] = count;
+      std::size_t members = 1;
+      for(std::size_t q = 0; q < queue.size() && members < size; q++)
+        for(int de : g.incident[queue[q]]) {
+          const int j = g.edges[de][0] == queue[q] ? g.edges[de][1] :
+                                                     g.edges[de][0];
+          if(cluster[j] >= 0 || members >= size) continue;
+          cluster[j] = count;
+          members++;
+          queue.push_back(j);
+        }
+      count++;
+    }
+    return count;
+  }
+
+  // The Fiedler vector of g computed on the graph of clusters of about n /
+  // coarseNodes of its nodes (weights summed between clusters), taken to
+  // the nodes and smoothed there by Jacobi sweeps (the clusters' own
+  // boundaries are no cut); empty if the eigensolver fails
+  std::vector<double> coarseFiedler(const dualGraph &g, std::size_t n,
+                                    std::size_t coarseNodes)
+  {
+    std::vector<int> cluster;
+    const std::size_t size = (n + coarseNodes - 1) / coarseNodes;
+    const int nc = growClusters(g, n, size, cluster);
+    std::vector<std::pair<std::array<int, 2>, double> > between;
+    for(std::size_t e = 0; e < g.edges.size(); e++) {
+      int a = cluster[g.edges[e][0]], b = cluster[g.edges[e][1]];
+      if(a == b) continue;
+      if(a > b) std::swap(a, b);
+      between.push_back({{{a, b}}, g.weights[e]});
+    }
+    std::sort(between.begin(), between.end());
+    std::vector<std::array<int, 2> > edges;
+    std::vector<double> weights;
+    for(const auto &b : between) {
+      if(!edges.empty() && edges.back() == b.first)
+        weights.back() += b.second;
+      else {
+        edges.push_back(b.first);
+        weights.push_back(b.second);
+      }
+    }
+    fiedlerResult f = fiedlerVector(nc, edges, weights);
+    if(!f.error.ok()) return std::vector<double>();
+    std::vector<double> x(n), next(n);
+    for(std::size_t i = 0; i < n; i++) x[i] = f.x[cluster[i]];
+    // about the clusters' diameter in sweeps
+    const int sweeps = 2 * (int)std::ceil(std::sqrt((double)size));
+    for(int s = 0; s < sweeps; s++) {
+      for(std::size_t i = 0; i < n; i++) {
+        double sum = 0., weight = 0.;
+        for(int de : g.incident[i]) {
+          const int j = g.edges[de][0] == (int)i ? g.edges[de][1] :
+                                                   g.edges[de][0];
+          sum += g.weights[de] * x[j];
+          weight += g.weights[de];
+        }
+        next[i] = weight > 0. ? 0.5 * (x[i] + sum / weight) : x[i];
+      }
+      x.swap(next);
+    }
+    return x;
+  }
+
 } // namespace
 
 std::vector<char> bisectPart(const layoutMesh &mesh,
                              const triangleAdjacency &adjacency,
-                             const std::vector<int> &part)
+                             const std::vector<int> &part,
+                             std::size_t coarseNodes)
 {
   const std::size_t n = part.size();
   std::vector<char> side(n, 0);
   if(n < 2) return side;
   dualGraph g = makeDualGraph(mesh, adjacency, part);
   std::vector<double> x;
-  fiedlerResult f = fiedlerVector((int)n, g.edges, g.weights);
-  if(f.error.ok())
-    x.assign(f.x.data(), f.x.data() + n);
-  else
-    x = axisOrder(mesh, part);
+  if(coarseNodes >= 2 && n > 2 * coarseNodes)
+    x = coarseFiedler(g, n, coarseNodes);
+  else {
+    fiedlerResult f = fiedlerVector((int)n, g.edges, g.weights);
+    if(f.error.ok()) x.assign(f.x.data(), f.x.data() + n);
+  }
+  if(x.empty()) x = axisOrder(mesh, part);
 
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);

@@ -89,7 +89,9 @@ namespace {
       out.kept = true;
       return out;
     }
-    std::vector<char> side = bisectPart(mesh, adjacency, part.triangles);
+    std::vector<char> side =
+      bisectPart(mesh, adjacency, part.triangles,
+                 out.check.bySize ? parameters.coarseCutNodes : 0);
     std::vector<int> halves[2];
     for(std::size_t i = 0; i < side.size(); i++)
       halves[(int)side[i]].push_back(part.triangles[i]);

@@ -38,6 +38,11 @@ struct layoutParameters {
   double noiseWidthMaxArea = 0.;
   // Cuts of one feature patch, at most this deep (each halves it or so)
   int maxDepth = 48;
+  // A part refused for its size alone is cut by the Fiedler vector of
+  // about this many clusters of its triangles (bisectPart; 0: exact): the
+  // exact one of a large scan's largest parts, one after the other, was
+  // most of the layout's time (1.4M triangles: 66 s)
+  std::size_t coarseCutNodes = 50000;
   // Parts verified at once, each on its own thread (the verifier must then
   // be safe to call from several threads); the result is the same for any
   // number
@@ -49,6 +54,9 @@ struct layoutParameters {
 struct partCheck {
   bool ok = true;
   std::string reason;
+  // refused for its number of triangles alone (not mapped): cut by a
+  // coarse Fiedler vector (layoutParameters::coarseCutNodes)
+  bool bySize = false;
 };
 typedef std::function<partCheck(const std::vector<int> &triangles)>
   partVerifier;
@@ -102,9 +110,14 @@ int mergeNoisePatches(const layoutMesh &mesh,
 // compared with the smaller side: the best level set of the Fiedler vector
 // of its dual graph (edges weighted by length over centroid distance).
 // Returns the side (0 or 1) of each triangle of `part`, both non-empty.
+// coarseNodes > 0: a part of more than twice as many triangles gets the
+// Fiedler vector of a graph of about coarseNodes clusters of its
+// triangles, smoothed on its own graph (the eigensolver's cost grows
+// faster than the graph: a cut where the cut's place matters less)
 std::vector<char> bisectPart(const layoutMesh &mesh,
                              const triangleAdjacency &adjacency,
-                             const std::vector<int> &part);
+                             const std::vector<int> &part,
+                             std::size_t coarseNodes = 0);
 
 // The edge-connected components of a part (through manifold edges whose two
 // triangles are both in the part)

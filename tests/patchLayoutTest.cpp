@@ -240,6 +240,64 @@ TEST(patchLayout, bisectionCutsAStripStraightAcross)
   EXPECT_EQ(partComponents(adjacency, all, all.size()).size(), 1u);
 }
 
+TEST(patchLayout, coarseBisectionCutsALongStripAcrossToo)
+{
+  // 4000 triangles, the Fiedler vector of about 100 clusters: a cut across
+  // the strip, nearly as short as the exact one
+  layoutMesh mesh = meshOf(rectangleGrid(200, 10, 20., 1.));
+  triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
+  std::vector<int> all(mesh.triangles.size());
+  for(std::size_t i = 0; i < all.size(); i++) all[i] = (int)i;
+  for(std::size_t coarse : {std::size_t(0), std::size_t(100)}) {
+    std::vector<char> side = bisectPart(mesh, adjacency, all, coarse);
+    double cut = 0., area[2] = {0., 0.};
+    for(std::size_t t = 0; t < all.size(); t++)
+      area[(int)side[t]] += triangleArea(mesh, (int)t);
+    for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+      if(adjacency.numTriangles((int)e) != 2) continue;
+      const int *tris = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
+      if(side[tris[0]] != side[tris[1]])
+        cut += edgeLength(mesh, adjacency.edges[e]);
+    }
+    // exact: one grid line; coarse: a step or two off it (measured 1.04)
+    EXPECT_GE(cut, 1. - 1e-12) << coarse;
+    EXPECT_LE(cut, coarse ? 1.1 : 1. + 1e-12) << coarse;
+    EXPECT_GE(std::min(area[0], area[1]), 2. - 1e-12) << coarse;
+    std::vector<int> half;
+    for(std::size_t t = 0; t < all.size(); t++)
+      if(side[t]) half.push_back((int)t);
+    EXPECT_EQ(partComponents(adjacency, half, all.size()).size(), 1u);
+  }
+}
+
+TEST(patchLayout, partsRefusedForTheirSizeAreCutCoarsely)
+{
+  // a verifier refusing more than 1000 triangles for their number alone:
+  // the 4000-triangle strip cut by coarse Fiedler vectors (100 clusters)
+  // into parts of 1000 or fewer (4 to 8: the cuts are near the middles),
+  // every cut in two pieces
+  layoutMesh mesh = meshOf(rectangleGrid(200, 10, 20., 1.));
+  layoutParameters p;
+  p.coarseCutNodes = 100;
+  int refused = 0;
+  partVerifier verify = [&refused](const std::vector<int> &part) {
+    partCheck c;
+    if(part.size() > 1000) {
+      c = partCheck{false, "too large", true};
+      refused++;
+    }
+    return c;
+  };
+  layoutResult r = computePatchLayout(mesh, p, verify);
+  EXPECT_GE(r.numPatches, 4);
+  EXPECT_LE(r.numPatches, 8); // measured 7
+  EXPECT_EQ(refused, r.numPatches - 1);
+  EXPECT_TRUE(r.unverified.empty());
+  std::vector<int> count(r.numPatches, 0);
+  for(int q : r.patch) count[q]++;
+  for(int c : count) EXPECT_LE(c, 1000);
+}
+
 TEST(patchLayout, coarseCadFacesAreNotNoise)
 {
   // A box of 12 triangles, its 12 edges sharp: 6 faces, none of them noise
