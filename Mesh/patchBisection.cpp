@@ -108,8 +108,8 @@ namespace {
       std::size_t members = 1;
       for(std::size_t q = 0; q < queue.size() && members < size; q++)
         for(int de : g.incident[queue[q]]) {
-          const int j = g.edges[de][0] == queue[q] ? g.edges[de][1] :
-                                                     g.edges[de][0];
+          const int j =
+            g.edges[de][0] == queue[q] ? g.edges[de][1] : g.edges[de][0];
           if(cluster[j] >= 0 || members >= size) continue;
           cluster[j] = count;
           members++;
@@ -158,8 +158,8 @@ namespace {
       for(std::size_t i = 0; i < n; i++) {
         double sum = 0., weight = 0.;
         for(int de : g.incident[i]) {
-          const int j = g.edges[de][0] == (int)i ? g.edges[de][1] :
-                                                   g.edges[de][0];
+          const int j =
+            g.edges[de][0] == (int)i ? g.edges[de][1] : g.edges[de][0];
           sum += g.weights[de] * x[j];
           weight += g.weights[de];
         }
@@ -196,7 +196,8 @@ std::vector<char> bisectPart(const layoutMesh &mesh,
                    [&x](int a, int b) { return x[a] < x[b]; });
   std::vector<double> areas(n);
   double total = 0.;
-  for(std::size_t i = 0; i < n; i++) total += (areas[i] = triangleArea(mesh, part[i]));
+  for(std::size_t i = 0; i < n; i++)
+    total += (areas[i] = triangleArea(mesh, part[i]));
   const bool byCount = !(total > 0.); // all degenerate: count triangles
   if(byCount) {
     std::fill(areas.begin(), areas.end(), 1.);

@@ -100,6 +100,24 @@ namespace {
     return {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}};
   }
 
+  // Length of the cut between the sides of a bisection of the whole mesh,
+  // and each side's area
+  double cutOf(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+               const std::vector<char> &side, double area[2])
+  {
+    area[0] = area[1] = 0.;
+    for(std::size_t t = 0; t < side.size(); t++)
+      area[(int)side[t]] += triangleArea(mesh, (int)t);
+    double cut = 0.;
+    for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+      if(adjacency.numTriangles((int)e) != 2) continue;
+      const int *tris = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
+      if(side[tris[0]] != side[tris[1]])
+        cut += edgeLength(mesh, adjacency.edges[e]);
+    }
+    return cut;
+  }
+
 } // namespace
 
 TEST(patchLayout, noisePatchIsMergedAndItsPinchGoesWithIt)
@@ -225,15 +243,8 @@ TEST(patchLayout, bisectionCutsAStripStraightAcross)
   std::vector<int> all(mesh.triangles.size());
   for(std::size_t i = 0; i < all.size(); i++) all[i] = (int)i;
   std::vector<char> side = bisectPart(mesh, adjacency, all);
-  double cut = 0., area[2] = {0., 0.};
-  for(std::size_t t = 0; t < all.size(); t++)
-    area[(int)side[t]] += triangleArea(mesh, (int)t);
-  for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
-    if(adjacency.numTriangles((int)e) != 2) continue;
-    const int *tris = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
-    if(side[tris[0]] != side[tris[1]])
-      cut += edgeLength(mesh, adjacency.edges[e]);
-  }
+  double area[2];
+  const double cut = cutOf(mesh, adjacency, side, area);
   // the shortest cut leaving a tenth of the area: one grid line across
   EXPECT_NEAR(cut, 1., 1e-12);
   EXPECT_GE(std::min(area[0], area[1]), 1. - 1e-12);
@@ -250,15 +261,8 @@ TEST(patchLayout, coarseBisectionCutsALongStripAcrossToo)
   for(std::size_t i = 0; i < all.size(); i++) all[i] = (int)i;
   for(std::size_t coarse : {std::size_t(0), std::size_t(100)}) {
     std::vector<char> side = bisectPart(mesh, adjacency, all, coarse);
-    double cut = 0., area[2] = {0., 0.};
-    for(std::size_t t = 0; t < all.size(); t++)
-      area[(int)side[t]] += triangleArea(mesh, (int)t);
-    for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
-      if(adjacency.numTriangles((int)e) != 2) continue;
-      const int *tris = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
-      if(side[tris[0]] != side[tris[1]])
-        cut += edgeLength(mesh, adjacency.edges[e]);
-    }
+    double area[2];
+    const double cut = cutOf(mesh, adjacency, side, area);
     // exact: one grid line; coarse: a step or two off it (measured 1.04)
     EXPECT_GE(cut, 1. - 1e-12) << coarse;
     EXPECT_LE(cut, coarse ? 1.1 : 1. + 1e-12) << coarse;
