@@ -11,8 +11,15 @@
 # have to load the sanitizers' runtime first.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-export REPARAM_BUILD_DIR=${REPARAM_SANITIZE_DIR:-$here/build-sanitize}
-bash "$here/scripts/build.sh" -DREPARAM_SANITIZE=ON
+# REPARAM_SANITIZER=thread: ThreadSanitizer instead (build-tsan/), for the
+# layout's threads, e.g. REPARAM_SANITIZER=thread scripts/sanitize.sh -R Threads
+if [ "${REPARAM_SANITIZER:-address}" = thread ]; then
+  export REPARAM_BUILD_DIR=${REPARAM_SANITIZE_DIR:-$here/build-tsan}
+  bash "$here/scripts/build.sh" -DREPARAM_SANITIZE=thread
+else
+  export REPARAM_BUILD_DIR=${REPARAM_SANITIZE_DIR:-$here/build-sanitize}
+  bash "$here/scripts/build.sh" -DREPARAM_SANITIZE=ON
+fi
 # The reports also go to files: a test that checks its log for a line may
 # pass with a report after that line, the files still tell
 reports=$REPARAM_BUILD_DIR/sanitizer-reports
@@ -20,6 +27,7 @@ rm -rf "$reports"
 mkdir -p "$reports"
 export ASAN_OPTIONS=detect_leaks=0:halt_on_error=1:log_path=$reports/asan
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:log_path=$reports/ubsan
+export TSAN_OPTIONS=halt_on_error=1:log_path=$reports/tsan
 cd "$REPARAM_BUILD_DIR"
 status=0
 ctest --output-on-failure --parallel "${REPARAM_JOBS:-$(nproc)}" \
