@@ -56,11 +56,12 @@ double mapCrowding(const std::vector<SPoint2> &uv,
   return crowding > 1e299 ? 1. : crowding;
 }
 
-double boundaryLargeness(const std::vector<SPoint3> &xyz,
-                         const std::vector<int> &triangleNodes)
+void areaAndBoundaryLength(const std::vector<SPoint3> &xyz,
+                           const std::vector<int> &triangleNodes, double &area,
+                           double &length)
 {
   std::map<std::pair<int, int>, int> uses;
-  double area = 0.;
+  area = 0.;
   for(std::size_t t = 0; t + 2 < triangleNodes.size(); t += 3) {
     const int *n = &triangleNodes[t];
     area += 0.5 * crossprod(SVector3(xyz[n[0]], xyz[n[1]]),
@@ -71,10 +72,17 @@ double boundaryLargeness(const std::vector<SPoint3> &xyz,
       uses[std::make_pair(std::min(a, b), std::max(a, b))]++;
     }
   }
-  double length = 0.;
+  length = 0.;
   for(const auto &e : uses)
     if(e.second == 1)
       length += xyz[e.first.first].distance(xyz[e.first.second]);
+}
+
+double boundaryLargeness(const std::vector<SPoint3> &xyz,
+                         const std::vector<int> &triangleNodes)
+{
+  double area, length;
+  areaAndBoundaryLength(xyz, triangleNodes, area, length);
   if(!(length > 0.)) return 1e300; // closed
   return area / (length * length / (4. * M_PI));
 }

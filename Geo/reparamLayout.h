@@ -24,6 +24,12 @@ const double reparamMinCrowding = 1e-4;
 // flat disk its boundary would bound (a hemisphere: 2)
 const double reparamMaxLargeness = 4.;
 
+// Area of a triangulation (triangleNodes: 3 node indices per triangle) and
+// length of its boundary (edges of one triangle, all loops)
+void areaAndBoundaryLength(const std::vector<SPoint3> &xyz,
+                           const std::vector<int> &triangleNodes, double &area,
+                           double &length);
+
 // Area over that of the disk with the boundary's length (all loops): 1 for
 // a flat disk, 2 for a hemisphere, large for a tube closed at one end
 double boundaryLargeness(const std::vector<SPoint3> &xyz,

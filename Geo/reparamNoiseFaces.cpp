@@ -8,48 +8,47 @@
 #include "GmshMessage.h"
 #include "MTriangle.h"
 #include "meshFidelity.h"
+#include "reparamLayout.h"
 #include "reparamNoiseFaces.h"
 #include "reparamOptimizableMesh.h"
 
 double triangulationWidth(const surfaceMesh &mesh)
 {
-  std::map<std::pair<int, int>, int> uses;
-  double area = 0.;
-  for(const std::array<int, 3> &t : mesh.triangles) {
-    const SPoint3 &a = mesh.points[t[0]], &b = mesh.points[t[1]],
-                  &c = mesh.points[t[2]];
-    area += 0.5 * crossprod(SVector3(a, b), SVector3(a, c)).norm();
-    for(int k = 0; k < 3; k++) {
-      const int p = t[k], q = t[(k + 1) % 3];
-      uses[std::make_pair(std::min(p, q), std::max(p, q))]++;
-    }
-  }
-  double length = 0.;
-  for(const auto &e : uses)
-    if(e.second == 1)
-      length +=
-        mesh.points[e.first.first].distance(mesh.points[e.first.second]);
+  std::vector<int> nodes;
+  nodes.reserve(3 * mesh.triangles.size());
+  for(const std::array<int, 3> &t : mesh.triangles)
+    nodes.insert(nodes.end(), t.begin(), t.end());
+  double area, length;
+  areaAndBoundaryLength(mesh.points, nodes, area, length);
   if(!(length > 0.)) return mesh.triangles.empty() ? 0. : 1e300;
   return 2. * area / length;
 }
 
 namespace {
 
-  // Sum and count of the edge lengths of gf's triangles
-  void addEdges(const GFace *gf, double &sum, std::size_t &count)
+  // Sum and count of the edge lengths of each face's triangles
+  typedef std::map<const GFace *, std::pair<double, std::size_t> > edgeSums;
+
+  edgeSums edgeSumsOf(GModel *m)
   {
-    for(const MTriangle *t : gf->triangles)
-      for(int k = 0; k < 3; k++) {
-        sum +=
-          t->getVertex(k)->point().distance(t->getVertex((k + 1) % 3)->point());
-        count++;
-      }
+    edgeSums sums;
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+      std::pair<double, std::size_t> &s = sums[*it];
+      s = {0., 0};
+      for(const MTriangle *t : (*it)->triangles)
+        for(int k = 0; k < 3; k++) {
+          s.first += t->getVertex(k)->point().distance(
+            t->getVertex((k + 1) % 3)->point());
+          s.second++;
+        }
+    }
+    return sums;
   }
 
   // The mean edge of the meshes of the faces gf shares a curve with (gf's
   // own mesh when it has none): gf's own mesh is made of its curves' nodes,
   // as close as they are
-  double meshSizeAround(GFace *gf)
+  double meshSizeAround(GFace *gf, const edgeSums &sums)
   {
     double sum = 0.;
     std::size_t count = 0;
@@ -57,8 +56,14 @@ namespace {
     for(GEdge *ge : gf->edges())
       for(GFace *other : ge->faces())
         if(other != gf) around.insert(other);
-    for(GFace *f : around) addEdges(f, sum, count);
-    if(!count) addEdges(gf, sum, count);
+    for(GFace *f : around) {
+      sum += sums.at(f).first;
+      count += sums.at(f).second;
+    }
+    if(!count) {
+      sum = sums.at(gf).first;
+      count = sums.at(gf).second;
+    }
     return count ? sum / count : 0.;
   }
 
@@ -67,13 +72,14 @@ namespace {
 std::set<GEdge *> reparamNoiseFaceCurves(GModel *m)
 {
   std::set<GEdge *> curves;
+  const edgeSums sums = edgeSumsOf(m);
   std::string tags;
   std::size_t faces = 0;
   for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
     GFace *gf = *it;
     if(!reparamOptimizableFace(gf)) continue;
     const double width = triangulationWidth(inputTriangulationOf(gf));
-    const double size = meshSizeAround(gf);
+    const double size = meshSizeAround(gf, sums);
     if(!(width < 0.25 * size)) continue;
     for(GEdge *ge : gf->edges()) {
       const std::vector<GFace *> sides = ge->faces();

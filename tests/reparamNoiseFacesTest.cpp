@@ -11,6 +11,7 @@
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 #include "meshFidelity.h"
+#include "reparamLayout.h"
 #include "reparamNoiseFaces.h"
 #include "testPatches.h"
 #include "triangleQuality.h"
@@ -68,6 +69,10 @@ TEST(noiseFaces, widthIsTwiceTheAreaOverTheBoundary)
                   SPoint3(0, 0.1, 0)};
   strip.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
   EXPECT_NEAR(triangulationWidth(strip), 0.2 / 2.2, 1e-12);
+  double area, length;
+  areaAndBoundaryLength(strip.points, {0, 1, 2, 0, 2, 3}, area, length);
+  EXPECT_NEAR(area, 0.1, 1e-12);
+  EXPECT_NEAR(length, 2.2, 1e-12);
   EXPECT_EQ(triangulationWidth(surfaceMesh()), 0.);
   // a closed tetrahedron has no boundary
   surfaceMesh closed;
