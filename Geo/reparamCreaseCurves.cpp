@@ -86,22 +86,30 @@ namespace {
     return true;
   }
 
-  // Whether crease ge is shorter than twice the mesh size at its middle (at
-  // most two segments) and bent: its ends closer than 0.8 of its length.
-  // Two segments cannot follow it, and their ends are corners inside the
-  // face; a straight short crease is meshed along as well as a long one
-  bool tooBentForTheMesh(GEdge *ge)
+  // Whether crease ge of gf is too small for the mesh size at its middle
+  // (creaseTooSmallForMesh), against gf's other curves that do not end
+  // where it does
+  bool tooSmallForTheMesh(GFace *gf, GEdge *ge)
   {
-    std::vector<SPoint3> polyline;
-    if(!reparamInputPolyline(ge, polyline) || polyline.size() < 2) return false;
-    double length = 0.;
-    for(std::size_t i = 0; i + 1 < polyline.size(); i++)
-      length += polyline[i].distance(polyline[i + 1]);
-    const SPoint3 &middle = polyline[polyline.size() / 2];
+    std::vector<SPoint3> crease;
+    if(!reparamInputPolyline(ge, crease) || crease.size() < 2) return false;
+    const SPoint3 &middle = crease[crease.size() / 2];
     const double size =
       BGM_MeshSize(ge, 0., 0., middle.x(), middle.y(), middle.z());
-    return length < 2. * size &&
-           polyline.front().distance(polyline.back()) < 0.8 * length;
+    std::vector<GEdge *> curves = gf->edges();
+    curves.insert(curves.end(), gf->embeddedEdges().begin(),
+                  gf->embeddedEdges().end());
+    std::vector<std::vector<SPoint3> > others;
+    for(GEdge *other : curves) {
+      std::vector<SPoint3> line;
+      const bool touches = other->getBeginVertex() == ge->getBeginVertex() ||
+                           other->getBeginVertex() == ge->getEndVertex() ||
+                           other->getEndVertex() == ge->getBeginVertex() ||
+                           other->getEndVertex() == ge->getEndVertex();
+      if(other != ge && !touches && reparamInputPolyline(other, line))
+        others.push_back(line);
+    }
+    return creaseTooSmallForMesh(crease, others, size);
   }
 
   // The crease curves taken out of their faces for their size, by model
@@ -165,7 +173,7 @@ int reparamHideSmallCreaseCurves(GModel *m)
     std::vector<GEdge *> &embedded = gf->embeddedEdges();
     std::vector<GEdge *> kept, hidden;
     for(GEdge *ge : embedded)
-      (found->second.count(ge) && tooBentForTheMesh(ge) ? hidden : kept)
+      (found->second.count(ge) && tooSmallForTheMesh(gf, ge) ? hidden : kept)
         .push_back(ge);
     if(hidden.empty()) continue;
     embedded.swap(kept);
@@ -177,8 +185,8 @@ int reparamHideSmallCreaseCurves(GModel *m)
   if(small.empty()) return 0;
   std::string tags;
   for(int tag : faces) tags += (tags.empty() ? "" : ", ") + std::to_string(tag);
-  Msg::Info("Reparam: %lu bent crease curve%s shorter than twice the mesh "
-            "size not kept (surface%s %s)",
+  Msg::Info("Reparam: %lu crease curve%s too small for the mesh size (bent, "
+            "or ending by another curve) not kept (surface%s %s)",
             small.size(), small.size() > 1 ? "s" : "",
             faces.size() > 1 ? "s" : "", tags.c_str());
   return (int)small.size();

@@ -25,19 +25,14 @@ int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
 
 // Before the curves are meshed (the mesh size is known then, not when
 // CreateGeometry kept the creases, at the input's scale): the crease curves
-// shorter than twice the mesh size asked at their middle and bent (their
-// ends closer than 0.8 of their length) taken out of their faces until each
-// is meshed, and, once Mesh1D is done, their 1D meshes deleted with those of
-// their end points no other curve or face uses
-// (reparamDeleteHiddenCreaseMeshes). One or two segments cannot follow
-// such a crease, and their ends are corners inside the face: armadillo's
-// noisy crease loops (1.5 sizes long, ends 0.4 size apart) gave triangles
-// of kappa 0.05 between their two segments. The mesh may then cut the
-// crease: the optimization on the input puts back the input nodes it cuts
-// off (Mesh/farInputNodes.h), at some cost to the triangles there, which is
-// why straight short creases stay (fertility at its input's edge length:
-// kappa min 0.594 -> 0.545 without its straight one). Returns how many were
-// taken out
+// too small for the mesh size asked at their middle (Mesh/creaseChains.h,
+// creaseTooSmallForMesh: shorter than three sizes and bent, or ending
+// within half a size of another curve of their face) taken out of their
+// faces until each is meshed, and, once Mesh1D is done, their 1D meshes
+// deleted with those of their end points no other curve or face uses
+// (reparamDeleteHiddenCreaseMeshes). The mesh may then cut the crease: the
+// optimization on the input puts back the input nodes it cuts off
+// (Mesh/farInputNodes.h). Returns how many were taken out
 int reparamHideSmallCreaseCurves(GModel *m);
 void reparamDeleteHiddenCreaseMeshes(GModel *m);
 // Whether ge is a crease curve taken out of its face

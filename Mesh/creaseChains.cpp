@@ -1,8 +1,10 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <set>
+#include "SVector3.h"
 #include "creaseChains.h"
 
 namespace {
@@ -86,8 +88,7 @@ std::vector<std::vector<int> >
 creaseChains(const std::vector<SPoint3> &points,
              const std::vector<std::array<int, 3> > &triangles,
              const std::function<bool(int, int)> &isCrease,
-             const std::vector<SPoint3> &avoid, double margin,
-             double minLength)
+             const std::vector<SPoint3> &avoid, double margin, double minLength)
 {
   std::vector<std::vector<int> > kept;
   const creaseGraph graph = creaseEdges(triangles, isCrease);
@@ -113,4 +114,36 @@ creaseChains(const std::vector<SPoint3> &points,
       kept.push_back(best);
   }
   return kept;
+}
+
+double distanceToPolyline(const SPoint3 &p,
+                          const std::vector<SPoint3> &polyline)
+{
+  if(polyline.empty()) return std::numeric_limits<double>::infinity();
+  double d = p.distance(polyline[0]);
+  for(std::size_t i = 0; i + 1 < polyline.size(); i++) {
+    const SPoint3 &a = polyline[i], &b = polyline[i + 1];
+    const SVector3 ab(a, b), ap(a, p);
+    const double l2 = dot(ab, ab);
+    const double t =
+      l2 > 0. ? std::min(1., std::max(0., dot(ap, ab) / l2)) : 0.;
+    d = std::min(d, p.distance(a + (b - a) * t));
+  }
+  return d;
+}
+
+bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
+                           const std::vector<std::vector<SPoint3> > &others,
+                           double size)
+{
+  if(crease.size() < 2 || !(size > 0.)) return false;
+  double length = 0.;
+  for(std::size_t i = 0; i + 1 < crease.size(); i++)
+    length += crease[i].distance(crease[i + 1]);
+  if(!(length < 3. * size)) return false;
+  if(crease.front().distance(crease.back()) < 0.8 * length) return true;
+  for(const auto &other : others)
+    for(const SPoint3 &end : {crease.front(), crease.back()})
+      if(distanceToPolyline(end, other) < 0.5 * size) return true;
+  return false;
 }

@@ -34,4 +34,24 @@ creaseChains(const std::vector<SPoint3> &points,
              const std::vector<SPoint3> &avoid, double margin,
              double minLength);
 
+// The distance from p to the polyline (its segments, or its one point)
+double distanceToPolyline(const SPoint3 &p,
+                          const std::vector<SPoint3> &polyline);
+
+// Whether a crease (the polyline of an embedded curve) is too small for the
+// mesh size asked at its middle: shorter than three sizes (at most three
+// segments) and either bent (its ends closer than 0.8 of its length) or
+// with an end within half a size of one of `others` (the face's other
+// curves, none ending there). Three segments cannot follow a bent crease,
+// and its ends are corners inside the face (armadillo: a crease doubling
+// back on itself, 1.7 sizes long, gave a triangle of kappa 0.14 between two
+// of its segments); between an end and a curve passing closer than half a
+// size the mesh must put a triangle narrower than that (two creases ending
+// 0.3 sizes apart: 0.24). A straight short crease away from others is
+// meshed along as well as a long one (fertility's kappa min 0.615, 0.551
+// when every crease shorter than three sizes is left out)
+bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
+                           const std::vector<std::vector<SPoint3> > &others,
+                           double size);
+
 #endif

@@ -30,8 +30,7 @@ namespace {
   bool creaseNotKept(const std::vector<std::string> &log)
   {
     for(const auto &l : log)
-      if(l.find("shorter than twice the mesh size not kept") !=
-         std::string::npos)
+      if(l.find("too small for the mesh size") != std::string::npos)
         return true;
     return false;
   }
@@ -92,12 +91,14 @@ TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
   // z = max(0, y - 0.3) |x - 0.5| over a 20 x 20 grid of the unit square:
   // a crease along x = 0.5, sharp (> 40 degrees) for y above 0.6, that ends
   // inside the face: it bounds no patch, and the mesh follows it anyway
-  // (straight: kept though shorter than twice the size)
+  // (about 3.5 sizes long; at 0.15 its end by the square's side, closer
+  // than half a size, has it left out)
   testTriangulation t = rectangleGrid(20, 20, 1., 1.);
   for(auto &p : t.points)
     p = SPoint3(p.x(), p.y(),
                 1.2 * std::max(0., p.y() - 0.3) * std::fabs(p.x() - 0.5));
-  std::vector<std::string> log = remeshWithRecipe(t, 0.15);
+  EXPECT_TRUE(creaseNotKept(remeshWithRecipe(t, 0.15)));
+  std::vector<std::string> log = remeshWithRecipe(t, 0.09);
   EXPECT_FALSE(creaseNotKept(log));
   int embedded = 0;
   for(const auto &l : log) {
@@ -130,7 +131,7 @@ TEST(creaseChains, creaseEndingInsideAFaceIsMeshedAlong)
   EXPECT_GE(onCrease, 3);
 }
 
-TEST(creaseChains, bentCreaseShorterThanTwiceTheMeshSizeIsNotKept)
+TEST(creaseChains, bentCreaseShorterThanThreeMeshSizesIsNotKept)
 {
   // at the size 0.8 the crease (ends 0.65 of its length apart) would get
   // two segments cutting its bend, with corners inside the face at their
@@ -154,4 +155,47 @@ TEST(creaseChains, bentCreaseShorterThanTwiceTheMeshSizeIsNotKept)
     embedded += l.find("kept as embedded curve") != std::string::npos;
   EXPECT_EQ(embedded, 1);
   EXPECT_EQ(nodesOutsideTriangles(), 0u);
+}
+
+TEST(creaseChains, distanceToPolylineIsToItsClosestSegment)
+{
+  const std::vector<SPoint3> line = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.),
+                                     SPoint3(1., 1., 0.)};
+  EXPECT_NEAR(distanceToPolyline(SPoint3(0.5, -0.2, 0.), line), 0.2, 1e-15);
+  EXPECT_NEAR(distanceToPolyline(SPoint3(1.3, 0.5, 0.), line), 0.3, 1e-15);
+  // beyond an end: to the end point
+  EXPECT_NEAR(distanceToPolyline(SPoint3(-0.3, 0.4, 0.), line), 0.5, 1e-15);
+  EXPECT_NEAR(distanceToPolyline(SPoint3(2., 3., 0.), {SPoint3(2., 3., 4.)}),
+              4., 1e-15);
+}
+
+TEST(creaseChains, creaseTooSmallWhenShortAndBentOrEndingByAnotherCurve)
+{
+  const double size = 1.;
+  // a hairpin 1.7 sizes long, its ends 0.6 of that apart
+  const std::vector<SPoint3> hairpin = {
+    SPoint3(0., 0., 0.), SPoint3(0.85, 0.3, 0.), SPoint3(0., 0.6, 0.)};
+  EXPECT_TRUE(creaseTooSmallForMesh(hairpin, {}, size));
+  // the same bend 3.4 sizes long: enough segments to follow it
+  std::vector<SPoint3> large;
+  for(SPoint3 p : hairpin) large.push_back(p * 2.);
+  EXPECT_FALSE(creaseTooSmallForMesh(large, {}, size));
+  // straight and 1.4 sizes long: kept, unless another curve passes within
+  // half a size of an end
+  const std::vector<SPoint3> straight = {
+    SPoint3(0., 0., 0.), SPoint3(0.7, 0., 0.), SPoint3(1.4, 0., 0.)};
+  const std::vector<SPoint3> far = {SPoint3(0., 0.6, 0.),
+                                    SPoint3(1.4, 0.6, 0.)};
+  const std::vector<SPoint3> nearEnd = {SPoint3(1.7, -1., 0.),
+                                        SPoint3(1.7, 1., 0.)};
+  EXPECT_FALSE(creaseTooSmallForMesh(straight, {}, size));
+  EXPECT_FALSE(creaseTooSmallForMesh(straight, {far}, size));
+  EXPECT_TRUE(creaseTooSmallForMesh(straight, {far, nearEnd}, size));
+  // long and straight: kept whatever passes by
+  std::vector<SPoint3> longer;
+  for(SPoint3 p : straight) longer.push_back(p * 2.5);
+  EXPECT_FALSE(creaseTooSmallForMesh(longer, {nearEnd}, size));
+  // a crease of one point, or no size: nothing to say
+  EXPECT_FALSE(creaseTooSmallForMesh({SPoint3(0., 0., 0.)}, {}, size));
+  EXPECT_FALSE(creaseTooSmallForMesh(hairpin, {}, 0.));
 }
