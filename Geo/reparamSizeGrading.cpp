@@ -98,19 +98,6 @@ namespace {
     return true;
   }
 
-  // The distance of p to a polyline (-1 if it has no segment)
-  double distanceToPolyline(const SPoint3 &p,
-                            const std::vector<SPoint3> &polyline)
-  {
-    double nearest = -1.;
-    for(std::size_t i = 0; i + 1 < polyline.size(); i++) {
-      const double d =
-        p.distance(closestPointOnSegment(p, polyline[i], polyline[i + 1]));
-      if(nearest < 0. || d < nearest) nearest = d;
-    }
-    return nearest;
-  }
-
   // Points embedded in a discrete face (the tips Reparam keeps as nodes)
   // closer than the size to one of its curves (embedded ones too: the
   // creases it keeps), as sources of the curves'

@@ -34,8 +34,8 @@ void reparamEndSizeGrading(GFace *gf);
 // takes the surfaces on them out of Mesh2D (a warning each: meshed without
 // that curve, MeshAdapt would refine towards the same size for as long)
 // until reparamRestoreRefusedSurfaces, called after Mesh2D.
-// With Reparam's maps, Begin first takes the bent crease curves shorter
-// than twice the size out of their faces, and End deletes their 1D meshes
+// With Reparam's maps, Begin first takes the crease curves too small for
+// the size out of their faces, and End deletes their 1D meshes
 // (Geo/reparamCreaseCurves.h): they are no sources of sizes.
 void reparamBeginCurveSizeGrading(GModel *m);
 void reparamEndCurveSizeGrading(GModel *m);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include "SVector3.h"
 #include "closestTriangle.h"
 
@@ -13,6 +14,17 @@ SPoint3 closestPointOnSegment(const SPoint3 &p, const SPoint3 &a,
   if(l2 == 0.) return a;
   double t = std::clamp(dot(SVector3(a, p), ab) / l2, 0., 1.);
   return SPoint3(a.x() + t * ab.x(), a.y() + t * ab.y(), a.z() + t * ab.z());
+}
+
+double distanceToPolyline(const SPoint3 &p,
+                          const std::vector<SPoint3> &polyline)
+{
+  if(polyline.empty()) return std::numeric_limits<double>::infinity();
+  double nearest = p.distance(polyline[0]);
+  for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+    nearest = std::min(nearest, p.distance(closestPointOnSegment(
+                                  p, polyline[i], polyline[i + 1])));
+  return nearest;
 }
 
 SPoint3 closestPointOnTriangle(const SPoint3 &p, const SPoint3 &a,

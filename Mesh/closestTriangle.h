@@ -16,6 +16,11 @@
 SPoint3 closestPointOnSegment(const SPoint3 &p, const SPoint3 &a,
                               const SPoint3 &b);
 
+// The distance from p to a polyline: to its closest segment, or its one
+// point (infinity without any)
+double distanceToPolyline(const SPoint3 &p,
+                          const std::vector<SPoint3> &polyline);
+
 // Closest point of triangle (a, b, c) to p, by the region of p among the
 // triangle's vertices, edges and face. Unlike Gmsh's
 // signedDistancePointTriangle, also defined for degenerate triangles (STL

@@ -1,10 +1,9 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
-#include <limits>
 #include <map>
 #include <set>
-#include "SVector3.h"
+#include "closestTriangle.h"
 #include "creaseChains.h"
 
 namespace {
@@ -114,22 +113,6 @@ creaseChains(const std::vector<SPoint3> &points,
       kept.push_back(best);
   }
   return kept;
-}
-
-double distanceToPolyline(const SPoint3 &p,
-                          const std::vector<SPoint3> &polyline)
-{
-  if(polyline.empty()) return std::numeric_limits<double>::infinity();
-  double d = p.distance(polyline[0]);
-  for(std::size_t i = 0; i + 1 < polyline.size(); i++) {
-    const SPoint3 &a = polyline[i], &b = polyline[i + 1];
-    const SVector3 ab(a, b), ap(a, p);
-    const double l2 = dot(ab, ab);
-    const double t =
-      l2 > 0. ? std::min(1., std::max(0., dot(ap, ab) / l2)) : 0.;
-    d = std::min(d, p.distance(a + (b - a) * t));
-  }
-  return d;
 }
 
 bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,

@@ -34,10 +34,6 @@ creaseChains(const std::vector<SPoint3> &points,
              const std::vector<SPoint3> &avoid, double margin,
              double minLength);
 
-// The distance from p to the polyline (its segments, or its one point)
-double distanceToPolyline(const SPoint3 &p,
-                          const std::vector<SPoint3> &polyline);
-
 // Whether a crease (the polyline of an embedded curve) is too small for the
 // mesh size asked at its middle: shorter than three sizes (at most three
 // segments) and either bent (its ends closer than 0.8 of its length) or

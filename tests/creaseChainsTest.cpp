@@ -157,18 +157,6 @@ TEST(creaseChains, bentCreaseShorterThanThreeMeshSizesIsNotKept)
   EXPECT_EQ(nodesOutsideTriangles(), 0u);
 }
 
-TEST(creaseChains, distanceToPolylineIsToItsClosestSegment)
-{
-  const std::vector<SPoint3> line = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.),
-                                     SPoint3(1., 1., 0.)};
-  EXPECT_NEAR(distanceToPolyline(SPoint3(0.5, -0.2, 0.), line), 0.2, 1e-15);
-  EXPECT_NEAR(distanceToPolyline(SPoint3(1.3, 0.5, 0.), line), 0.3, 1e-15);
-  // beyond an end: to the end point
-  EXPECT_NEAR(distanceToPolyline(SPoint3(-0.3, 0.4, 0.), line), 0.5, 1e-15);
-  EXPECT_NEAR(distanceToPolyline(SPoint3(2., 3., 0.), {SPoint3(2., 3., 4.)}),
-              4., 1e-15);
-}
-
 TEST(creaseChains, creaseTooSmallWhenShortAndBentOrEndingByAnotherCurve)
 {
   const double size = 1.;
