@@ -206,6 +206,16 @@ namespace {
 
 } // namespace
 
+bool reparamTakesPoorInput(GFace *gf, double minGamma)
+{
+  if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+    return false;
+  Msg::Info("Reparam: surface %d: input triangles of gamma down to %g, "
+            "parametrized all the same",
+            gf->tag(), minGamma);
+  return true;
+}
+
 void reparamBeginFaceGeometry(GFace *gf)
 {
   keptFaces().erase(gf);

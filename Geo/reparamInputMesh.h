@@ -18,6 +18,12 @@
 class GFace;
 class GModel;
 
+// Called by discreteFace::createGeometry when gf's input has triangles of
+// gamma below 1e-3 (minGamma the lowest): with Reparam's maps, which take
+// slivers (flip and fold checks, the map chain), an Info naming the
+// surface and true (no Gmsh warning then); false with Gmsh's own map
+bool reparamTakesPoorInput(GFace *gf, double minGamma);
+
 // Called by discreteFace::createGeometry before it parametrizes gf: a
 // failure of Reparam's maps is then no error, the reason kept for the
 // warning of reparamKeepInputMesh

@@ -187,3 +187,44 @@ TEST(reparamInputMesh, aFaceMeshedGivesWayToItsInputWhenThatIsNoWorse)
   EXPECT_EQ(freeEdgesOffTheUnitSquaresSides(nonManifold), 0);
   EXPECT_EQ(nonManifold, 0u);
 }
+
+TEST(reparamInputMesh, sliversAreParametrizedWithoutGmshsWarning)
+{
+  // the 8 x 8 grid of the unit square with the edge ab of the cells (4, 4)
+  // and (4, 3) split by a node 1e-5 off its midpoint: a sliver of gamma
+  // about 1e-4, which Reparam's maps take
+  testTriangulation t = rectangleGrid(8, 8, 1., 1.);
+  auto id = [](int i, int j) { return j * 9 + i; };
+  const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
+  const int m = (int)t.points.size();
+  t.points.push_back((t.points[a] + t.points[b]) * 0.5 +
+                     SPoint3(0., -1e-5, 0.));
+  auto it = std::find(t.triangles.begin(), t.triangles.end(),
+                      std::array<int, 3>{{below, b, a}});
+  ASSERT_NE(it, t.triangles.end());
+  *it = {{below, b, m}};
+  t.triangles.push_back({{below, m, a}});
+  t.triangles.push_back({{b, a, m}});
+
+  const std::vector<std::string> log = remeshWithRecipe(t, 0.1);
+  int taken = 0;
+  for(const auto &l : log) {
+    EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+    EXPECT_EQ(l.find("Warning"), std::string::npos) << l;
+    taken += l.find("input triangles of gamma down to") != std::string::npos &&
+             l.find("Info") != std::string::npos;
+  }
+  EXPECT_EQ(taken, 1);
+  EXPECT_TRUE(facesKeptAsInput(GModel::current()).empty());
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+
+  // with Gmsh's own map, Gmsh's warning stays
+  GFace *gf = *GModel::current()->firstFace();
+  double previous = 0.;
+  gmsh::option::getNumber("Mesh.CompoundParametrization", previous);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 0);
+  EXPECT_FALSE(reparamTakesPoorInput(gf, 1e-4));
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  EXPECT_TRUE(reparamTakesPoorInput(gf, 1e-4));
+  gmsh::option::setNumber("Mesh.CompoundParametrization", previous);
+}
