@@ -358,6 +358,24 @@ namespace {
     }
   }
 
+  // The triangles against the input the faces' own records count (each
+  // against its own input: a face narrower than the size judged against
+  // its neighbours' input too may find its triangles over a fold or spike
+  // of theirs pointing against it, adis16480 with noise: 2 -> 25), or
+  // `fallback` when a face has none
+  std::size_t againstRecorded(const std::vector<optimizationRecord> &records,
+                              std::size_t fallback)
+  {
+    std::size_t against = 0;
+    for(const optimizationRecord &o : records) {
+      if(!o.done) return fallback;
+      // (relative to the face's own orientation, which Gmsh turns along
+      // the input's after: a reversed mesh is no count of its own)
+      against += o.againstAfter;
+    }
+    return against;
+  }
+
   std::string tagList(const std::vector<GFace *> &faces)
   {
     std::string list;
@@ -426,10 +444,13 @@ namespace {
                  tagList(g.faces).c_str());
       return groupResult::unchanged;
     }
-    if(refuseWorse && r.minAfter < r.minBefore) {
+    const std::size_t against = againstRecorded(before, r.againstBefore);
+    if(refuseWorse && (r.minAfter < r.minBefore || r.againstAfter > against)) {
       Msg::Info("Reparam: surfaces %s: optimization across their curves "
-                "refused (kappa min %.3g -> %.3g)",
-                tagList(g.faces).c_str(), r.minBefore, r.minAfter);
+                "refused (kappa min %.3g -> %.3g, %lu -> %lu triangles "
+                "against the input)",
+                tagList(g.faces).c_str(), r.minBefore, r.minAfter, against,
+                r.againstAfter);
       return groupResult::refused;
     }
     groupWriter writer(g, m, nodes, input, inputFace, onInput);
