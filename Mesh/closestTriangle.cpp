@@ -27,35 +27,65 @@ double distanceToPolyline(const SPoint3 &p,
   return nearest;
 }
 
+namespace {
+
+  SPoint3 along(const SPoint3 &a, const SVector3 &v, double t)
+  {
+    return SPoint3(a.x() + t * v.x(), a.y() + t * v.y(), a.z() + t * v.z());
+  }
+
+  // Closest point of a triangle flat to round-off: its edges
+  SPoint3 closestPointOnEdges(const SPoint3 &p, const SPoint3 &a,
+                              const SPoint3 &b, const SPoint3 &c)
+  {
+    SPoint3 best = closestPointOnSegment(p, a, b);
+    double bestDistance = p.distance(best);
+    for(const SPoint3 &q :
+        {closestPointOnSegment(p, b, c), closestPointOnSegment(p, c, a)}) {
+      double d = p.distance(q);
+      if(d < bestDistance) {
+        bestDistance = d;
+        best = q;
+      }
+    }
+    return best;
+  }
+
+} // namespace
+
 SPoint3 closestPointOnTriangle(const SPoint3 &p, const SPoint3 &a,
                                const SPoint3 &b, const SPoint3 &c)
 {
-  SVector3 ab(a, b), ac(a, c), ap(a, p);
-  SVector3 n = crossprod(ab, ac);
-  double n2 = dot(n, n);
-  double scale = std::max({dot(ab, ab), dot(ac, ac), SVector3(b, c).normSq()});
-  // Barycentric coordinates of the projection onto the plane (Cramer on
-  // the normal equations); a triangle flat to round-off is its edges
-  if(n2 > 1e-24 * scale * scale) {
-    double v = dot(crossprod(ap, ac), n) / n2;
-    double w = dot(crossprod(ab, ap), n) / n2;
-    if(v >= 0. && w >= 0. && v + w <= 1.)
-      return SPoint3(a.x() + v * ab.x() + w * ac.x(),
-                     a.y() + v * ab.y() + w * ac.y(),
-                     a.z() + v * ab.z() + w * ac.z());
-  }
-  // outside the face: the closest point is on an edge
-  SPoint3 best = closestPointOnSegment(p, a, b);
-  double bestDistance = p.distance(best);
-  for(const SPoint3 &q :
-      {closestPointOnSegment(p, b, c), closestPointOnSegment(p, c, a)}) {
-    double d = p.distance(q);
-    if(d < bestDistance) {
-      bestDistance = d;
-      best = q;
-    }
-  }
-  return best;
+  const SVector3 ab(a, b), ac(a, c), ap(a, p);
+  const SVector3 n = crossprod(ab, ac);
+  const double n2 = dot(n, n);
+  const double scale =
+    std::max({dot(ab, ab), dot(ac, ac), SVector3(b, c).normSq()});
+  if(!(n2 > 1e-24 * scale * scale)) return closestPointOnEdges(p, a, b, c);
+  // the region of p among the corners, edges and face, from the dot
+  // products of the edges with p's offsets from the corners: one
+  // projection only (this search is most of the optimizer's and the
+  // report's time)
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if(d1 <= 0. && d2 <= 0.) return a;
+  const SVector3 bp(b, p);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if(d3 >= 0. && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if(vc <= 0. && d1 >= 0. && d3 <= 0.) return along(a, ab, d1 / (d1 - d3));
+  const SVector3 cp(c, p);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if(d6 >= 0. && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if(vb <= 0. && d2 >= 0. && d6 <= 0.) return along(a, ac, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if(va <= 0. && d4 - d3 >= 0. && d5 - d6 >= 0.)
+    return along(b, SVector3(b, c), (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  // inside the face: the projection, by its barycentric coordinates
+  const double sum = va + vb + vc, v = vb / sum, w = vc / sum;
+  return SPoint3(a.x() + v * ab.x() + w * ac.x(),
+                 a.y() + v * ab.y() + w * ac.y(),
+                 a.z() + v * ab.z() + w * ac.z());
 }
 
 namespace {
@@ -94,6 +124,16 @@ closestTriangleSearch::closestTriangleSearch(
                    (1. / 3.);
   _nodes.reserve(2 * _triangles.size() / leafSize + 2);
   build(0, (int)_order.size(), centroids);
+  _triangleBoxes.resize(6 * _order.size());
+  for(std::size_t i = 0; i < _order.size(); i++) {
+    double *box = &_triangleBoxes[6 * i];
+    const std::array<int, 3> &t = _triangles[_order[i]];
+    for(int k = 0; k < 3; k++) {
+      box[k] = std::min({_points[t[0]][k], _points[t[1]][k], _points[t[2]][k]});
+      box[3 + k] =
+        std::max({_points[t[0]][k], _points[t[1]][k], _points[t[2]][k]});
+    }
+  }
 }
 
 closestTriangleSearch::~closestTriangleSearch() {}
@@ -183,6 +223,8 @@ closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p,
     const boxNode &n = _nodes[top.second];
     if(n.count) {
       for(int i = n.first; i < n.first + n.count; i++) {
+        const double *box = &_triangleBoxes[6 * i];
+        if(boxDistance2(box, box + 3, p) >= best2) continue;
         SPoint3 point;
         const double d = distanceTo(_order[i], p, point);
         if(d * d < best2) {

@@ -69,6 +69,9 @@ private:
   std::vector<std::array<int, 3> > _triangles;
   std::vector<boxNode> _nodes;
   std::vector<int> _order;
+  // the box of triangle _order[i] at 6 i (low corner, then high): a leaf's
+  // triangles farther than the best distance are skipped by it
+  std::vector<double> _triangleBoxes;
   int build(int first, int count, const std::vector<SPoint3> &centroids);
   double distanceTo(int t, const SPoint3 &p, SPoint3 &closest) const;
 };

@@ -50,29 +50,42 @@ namespace {
     return g * (1. / N);
   }
 
-  // Whether an element points against the input under it: the sum of the
-  // unit normals of the input triangles closest to its centroid and to the
-  // points halfway to its corners. One sample alone would call inverted a
-  // coarse element laid across a ridge of the input (its normal is then
-  // nearly tangent to the input on either side).
+  // Whether an element (its corners) points against the input under it:
+  // the sum of the unit normals of the input triangles closest to its
+  // centroid and to the points halfway to its corners. One sample alone
+  // would call inverted a coarse element laid across a ridge of the input
+  // (its normal is then nearly tangent to the input on either side).
   template <int N>
-  bool pointsAgainst(const surfaceMesh &m, const std::array<int, N> &e,
-                     const SVector3 &normal, const surfaceMesh &input,
-                     const closestTriangleSearch &onInput,
-                     const closestTriangleHit &atCentroid)
+  bool cornersAgainst(const std::array<SPoint3, N> &corners,
+                      const SVector3 &normal, const surfaceMesh &input,
+                      const closestTriangleSearch &onInput,
+                      const closestTriangleHit &atCentroid)
   {
     auto unitNormal = [&](int t) {
       SVector3 n = triangleNormal(input, input.triangles[t]);
       double l = n.norm();
       return l > 0. ? n * (1. / l) : n;
     };
-    SPoint3 g = centroid<N>(m, e);
+    SPoint3 g(0., 0., 0.);
+    for(const SPoint3 &p : corners) g += p;
+    g *= 1. / N;
     SVector3 sum = unitNormal(atCentroid.triangle);
-    for(int j : e) {
-      SPoint3 half = (g + m.points[j]) * 0.5;
+    for(const SPoint3 &p : corners) {
+      SPoint3 half = (g + p) * 0.5;
       sum += unitNormal(onInput.closest(half, atCentroid.triangle).triangle);
     }
     return dot(normal, sum) < 0.;
+  }
+
+  template <int N>
+  bool pointsAgainst(const surfaceMesh &m, const std::array<int, N> &e,
+                     const SVector3 &normal, const surfaceMesh &input,
+                     const closestTriangleSearch &onInput,
+                     const closestTriangleHit &atCentroid)
+  {
+    std::array<SPoint3, N> corners;
+    for(int j = 0; j < N; j++) corners[j] = m.points[e[j]];
+    return cornersAgainst<N>(corners, normal, input, onInput, atCentroid);
   }
 
   struct oneSided {
@@ -142,11 +155,10 @@ bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
                           const closestTriangleSearch &onInput,
                           const closestTriangleHit &atCentroid)
 {
-  surfaceMesh m;
-  m.points = {a, b, c};
-  const std::array<int, 3> t = {{0, 1, 2}};
-  return pointsAgainst<3>(m, t, triangleNormal(m, t), input, onInput,
-                          atCentroid);
+  // no surfaceMesh made: the optimizer asks this for every change it tries
+  return cornersAgainst<3>({{a, b, c}},
+                           crossprod(SVector3(a, b), SVector3(a, c)), input,
+                           onInput, atCentroid);
 }
 
 surfaceMesh surfaceMeshOf(const GFace *gf)
