@@ -1,5 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <shared_mutex>
 #include "reparamCreaseCurves.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamFaceMeshing.h"
@@ -13,6 +14,21 @@
 #include "GmshMessage.h"
 
 namespace {
+
+  // Faces read their curves' meshes while they are meshed, on several
+  // threads with General.NumThreads > 1; Gmsh splits the segments of
+  // curves a face's mesh cannot recover (meshGFace.cpp, patches/0020) and
+  // has the faces on them meshed again: the split waits until no other face
+  // is being meshed (the shared lock of a face is held from
+  // reparamBeginFaceMeshing to reparamEndFaceMeshing, depth: its nesting on
+  // this thread)
+  std::shared_mutex &curvesMutex()
+  {
+    static std::shared_mutex m;
+    return m;
+  }
+  thread_local int readingCurves = 0;
+  thread_local bool splitting = false;
 
   // Mesh.CrossFieldClosestPoint while a face of Reparam's is meshed with
   // Frontal-Delaunay for quads (-1: not changed)
@@ -48,6 +64,7 @@ namespace {
 
 void reparamBeginFaceMeshing(GFace *gf)
 {
+  if(!readingCurves++) curvesMutex().lock_shared();
   reparamHideCreaseCurvesFromQuads(gf);
   reparamBeginSizeGrading(gf);
   useSmoothCrossField(gf);
@@ -60,6 +77,23 @@ void reparamEndFaceMeshing(GFace *gf)
   restoreCrossField();
   reparamEndSizeGrading(gf);
   reparamRestoreCreaseCurves(gf);
+  if(readingCurves > 0 && !--readingCurves) curvesMutex().unlock_shared();
+}
+
+void reparamBeginCurveSplit()
+{
+  if(splitting) return;
+  if(readingCurves) curvesMutex().unlock_shared();
+  curvesMutex().lock();
+  splitting = true;
+}
+
+void reparamEndCurveSplit()
+{
+  if(!splitting) return;
+  splitting = false;
+  curvesMutex().unlock();
+  if(readingCurves) curvesMutex().lock_shared();
 }
 
 bool reparamRecombineWithParametrization(GFace *gf)
@@ -68,19 +102,46 @@ bool reparamRecombineWithParametrization(GFace *gf)
   return record && record->map > 0 && gf->haveParametrization();
 }
 
-bool reparamMeshInParallel(GModel *m)
+namespace {
+
+  // Why Mesh2D meshes m's surfaces on one thread with Reparam (null: it
+  // need not): the quadrangle steps take crease curves out of the face and
+  // smooth across its neighbours, the anisotropic one changes
+  // Mesh.SmoothRatio while a face is meshed
+  const char *serialSurfacesReason(GModel *m)
+  {
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+      GFace *gf = *it;
+      if(gf->geomType() != GEntity::DiscreteSurface) continue;
+      if(CTX::instance()->mesh.recombineAll || gf->meshAttributes.recombine)
+        return "quadrangles";
+      if(reparamAnisotropicFace(gf)) return "anisotropic metric";
+    }
+    return nullptr;
+  }
+
+} // namespace
+
+bool reparamMeshInParallel(GModel *m, int dim)
 {
   if(Msg::GetMaxThreads() < 2 ||
      getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return true;
+  if(dim == 2) {
+    const char *reason = serialSurfacesReason(m);
+    if(reason)
+      Msg::Info("Reparam: discrete surfaces meshed on one thread (%s; "
+                "General.NumThreads = %d: Reparam's layout uses them)",
+                reason, Msg::GetMaxThreads());
+    return !reason;
+  }
   bool discrete = false;
-  for(auto it = m->firstFace(); it != m->lastFace() && !discrete; ++it)
-    discrete = (*it)->geomType() == GEntity::DiscreteSurface;
   for(auto it = m->firstEdge(); it != m->lastEdge() && !discrete; ++it)
     discrete = (*it)->geomType() == GEntity::DiscreteCurve;
   if(discrete)
-    Msg::Info("Reparam: discrete curves and surfaces meshed on one thread "
-              "(General.NumThreads = %d: Reparam's layout uses them)",
+    Msg::Info("Reparam: discrete curves meshed on one thread (their nodes "
+              "take the input's corners in turn; General.NumThreads = %d: "
+              "the layout and the surfaces use them)",
               Msg::GetMaxThreads());
   return !discrete;
 }

@@ -24,13 +24,25 @@ void reparamEndFaceMeshing(GFace *gf);
 // one-to-one map. Gmsh's own map keeps Gmsh's behaviour (the reference).
 bool reparamRecombineWithParametrization(GFace *gf);
 
-// Whether Mesh1D and Mesh2D may mesh m's curves and surfaces in parallel
-// (Gmsh built with OpenMP, General.NumThreads > 1; hook in Generator.cpp,
-// patches/0018): not when m has discrete curves or surfaces and Reparam
-// works on them (Mesh.CompoundParametrization > 0), whose hooks keep shared
-// state (corner snapping, input meshes, optimization records, reports);
-// then logs it once per call with several threads. Reparam's own layout
-// runs on the threads (Mesh/patchLayout.h).
-bool reparamMeshInParallel(GModel *m);
+// Whether Mesh1D (dim 1) or Mesh2D (dim 2) may mesh m's curves or surfaces
+// in parallel (Gmsh built with OpenMP, General.NumThreads > 1; hook in
+// Generator.cpp, patches/0018), where Reparam works on them
+// (Mesh.CompoundParametrization > 0): curves not when m has discrete ones
+// (the corner snapping gives an input corner to the first curve that takes
+// it: the mesh would depend on the threads' order); surfaces unless a
+// discrete one is recombined into quadrangles or meshed with the
+// anisotropic metric (those steps change options and curves around the
+// face). Logs it once per call with several threads. Reparam's state for
+// the triangle meshes of faces is per thread or behind a mutex; its own
+// layout runs on the threads too (Mesh/patchLayout.h).
+bool reparamMeshInParallel(GModel *m, int dim);
+
+// Called by meshGenerator (patches/0020) around Gmsh's split of the curve
+// segments a face's mesh could not recover: waits until no other face is
+// being meshed (each holds a shared lock from reparamBeginFaceMeshing to
+// reparamEndFaceMeshing; this thread's own is let go meanwhile), so that
+// no thread reads those curves while they change
+void reparamBeginCurveSplit();
+void reparamEndCurveSplit();
 
 #endif

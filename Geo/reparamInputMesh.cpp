@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <set>
 #include <unordered_map>
 #include "GEdge.h"
@@ -58,6 +59,15 @@ namespace {
   }
 
   GFace *faceInCreation = nullptr;
+
+  // keptFaces and inputMeshedFaces: faces are meshed in parallel (OpenMP
+  // builds), and a face's fallback to its input (reparamMeshFaceWithItsInput)
+  // records it while another face's optimization asks keptAsInput
+  std::mutex &facesMutex()
+  {
+    static std::mutex m;
+    return m;
+  }
 
   // Faces whose planar mesh gave way to their input triangles after
   // meshing (reparamMeshFaceWithItsInput), with the mesh that made: kept
@@ -218,6 +228,7 @@ bool reparamTakesPoorInput(GFace *gf, double minGamma)
 
 void reparamBeginFaceGeometry(GFace *gf)
 {
+  std::lock_guard<std::mutex> lock(facesMutex());
   keptFaces().erase(gf);
   faceInCreation = gf;
 }
@@ -237,7 +248,10 @@ bool reparamKeepInputMesh(GFace *gf)
        (int)compoundParametrization::gmsh ||
      gf->triangles.empty())
     return false;
-  const inputTriangulation &input = keptFaces()[gf] = copyOfTriangles(gf);
+  inputTriangulation copy = copyOfTriangles(gf);
+  std::unique_lock<std::mutex> lock(facesMutex());
+  const inputTriangulation &input = keptFaces()[gf] = std::move(copy);
+  lock.unlock();
   std::string leftOut;
   if(input.leftOut)
     leftOut = " (" + std::to_string(input.leftOut) +
@@ -251,6 +265,7 @@ bool reparamKeepInputMesh(GFace *gf)
 
 bool keptAsInput(const GFace *gf)
 {
+  std::lock_guard<std::mutex> lock(facesMutex());
   if(keptFaces().count(gf)) return true;
   auto it = inputMeshedFaces().find(gf);
   if(it == inputMeshedFaces().end()) return false;
@@ -282,7 +297,10 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
   candidate.triangles = stitched.triangles;
   if(countInverted(in, candidate) > against) return false;
   meshWithStitched(gf, input, stitched, boundary);
-  inputMeshedFaces()[gf] = {gf->getNumMeshElements(), gf->getMeshElement(0)};
+  {
+    std::lock_guard<std::mutex> lock(facesMutex());
+    inputMeshedFaces()[gf] = {gf->getNumMeshElements(), gf->getMeshElement(0)};
+  }
   Msg::Warning("Reparam: surface %d meshed with its %lu input triangles, "
                "stitched to its curves: its planar mesh kept %lu triangles "
                "against the input (a fold of the input, or a strip narrower "
@@ -293,9 +311,12 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
 
 bool reparamMeshFromInput(GFace *gf)
 {
+  std::unique_lock<std::mutex> lock(facesMutex());
   auto it = keptFaces().find(gf);
   if(it == keptFaces().end() || gf->haveParametrization()) return false;
+  // (a map's element stays where it is while others come and go)
   const inputTriangulation &input = it->second;
+  lock.unlock();
   std::vector<MVertex *> boundary;
   const stitchedTriangulation stitched = stitchToCurves(gf, input, boundary);
   meshWithStitched(gf, input, stitched, boundary);

@@ -2,7 +2,10 @@
 // the layout verifies its parts in parallel and gives the same patches; the
 // curves and surfaces Reparam works on are meshed on one thread
 
+#include <atomic>
+#include <chrono>
 #include <string>
+#include <thread>
 #include <gtest/gtest.h>
 #include "GFace.h"
 #include "GModel.h"
@@ -94,17 +97,23 @@ TEST(reparamThreads, twoThreadsGiveTheSameLayout)
   EXPECT_GT(meshTwo.second, 0.5);
 }
 
-TEST(reparamThreads, discreteEntitiesAreMeshedOnOneThread)
+TEST(reparamThreads, discreteCurvesAreMeshedOnOneThreadSurfacesOnAll)
 {
   remeshWithRecipe(hemisphere(12, 48), 0.1);
   // one thread: nothing to serialize
-  EXPECT_TRUE(reparamMeshInParallel(GModel::current()));
+  EXPECT_TRUE(reparamMeshInParallel(GModel::current(), 1));
+  EXPECT_TRUE(reparamMeshInParallel(GModel::current(), 2));
   threadCount threads(2);
   if(Msg::GetMaxThreads() < 2) GTEST_SKIP() << "Gmsh built without OpenMP";
-  EXPECT_FALSE(reparamMeshInParallel(GModel::current()));
+  EXPECT_FALSE(reparamMeshInParallel(GModel::current(), 1));
+  EXPECT_TRUE(reparamMeshInParallel(GModel::current(), 2));
+  // quadrangles: on one thread
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  EXPECT_FALSE(reparamMeshInParallel(GModel::current(), 2));
+  gmsh::option::setNumber("Mesh.RecombineAll", 0);
   // Gmsh's own map: Gmsh's own behaviour
   gmsh::option::setNumber("Mesh.CompoundParametrization", 0);
-  EXPECT_TRUE(reparamMeshInParallel(GModel::current()));
+  EXPECT_TRUE(reparamMeshInParallel(GModel::current(), 1));
   gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
   // a model without discrete entities
   gmsh::clear();
@@ -113,5 +122,33 @@ TEST(reparamThreads, discreteEntitiesAreMeshedOnOneThread)
   gmsh::model::geo::addPoint(1, 0, 0);
   gmsh::model::geo::addLine(1, 2);
   gmsh::model::geo::synchronize();
-  EXPECT_TRUE(reparamMeshInParallel(GModel::current()));
+  EXPECT_TRUE(reparamMeshInParallel(GModel::current(), 1));
+}
+
+TEST(reparamThreads, curveSplitWaitsForTheFacesBeingMeshed)
+{
+  remeshWithRecipe(hemisphere(12, 48), 0.1);
+  GFace *gf = *GModel::current()->firstFace();
+  // a face being meshed on this thread: another thread's split of curve
+  // segments (Gmsh's, when a face cannot recover them) waits for its end
+  reparamBeginFaceMeshing(gf);
+  std::atomic<bool> split(false);
+  std::thread other([&split]() {
+    reparamBeginCurveSplit();
+    split = true;
+    reparamEndCurveSplit();
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_FALSE(split.load());
+  reparamEndFaceMeshing(gf);
+  other.join();
+  EXPECT_TRUE(split.load());
+  // a split on the thread meshing the face lets its own lock go meanwhile
+  reparamBeginFaceMeshing(gf);
+  reparamBeginCurveSplit();
+  reparamEndCurveSplit();
+  reparamEndFaceMeshing(gf);
+  // and no face being meshed: no wait
+  reparamBeginCurveSplit();
+  reparamEndCurveSplit();
 }
