@@ -38,6 +38,25 @@ namespace {
     return inside;
   }
 
+  // An 8 x 8 grid of the unit square whose edge ab of the cells (4, 4) and
+  // (4, 3) is split by a node m at its midpoint moved by `offset`: the
+  // triangle (b, a, m) degenerate (no offset) or a sliver
+  testTriangulation gridWithSplitEdge(const SPoint3 &offset)
+  {
+    testTriangulation t = rectangleGrid(8, 8, 1., 1.);
+    auto id = [](int i, int j) { return j * 9 + i; };
+    const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
+    const int m = (int)t.points.size();
+    t.points.push_back((t.points[a] + t.points[b]) * 0.5 + offset);
+    auto it = std::find(t.triangles.begin(), t.triangles.end(),
+                        std::array<int, 3>{{below, b, a}});
+    if(it == t.triangles.end()) return t;
+    *it = {{below, b, m}};
+    t.triangles.push_back({{below, m, a}});
+    t.triangles.push_back({{b, a, m}});
+    return t;
+  }
+
 } // namespace
 
 TEST(boundaryStitch, inputBoundaryNodesGiveWayToTheCurvesNodes)
@@ -109,17 +128,8 @@ TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
   // an 8 x 8 grid of the unit square with a zero-area triangle (b, a, m)
   // along the edge ab of the cells (4, 4) and (4, 3), m its midpoint (exact
   // in binary): no map takes it, so its part of the layout is kept as it is
-  testTriangulation t = rectangleGrid(8, 8, 1., 1.);
-  auto id = [](int i, int j) { return j * 9 + i; };
-  const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
-  const int m = (int)t.points.size();
-  t.points.push_back((t.points[a] + t.points[b]) * 0.5);
-  auto it = std::find(t.triangles.begin(), t.triangles.end(),
-                      std::array<int, 3>{{below, b, a}});
-  ASSERT_NE(it, t.triangles.end());
-  *it = {{below, b, m}};
-  t.triangles.push_back({{below, m, a}});
-  t.triangles.push_back({{b, a, m}});
+  const testTriangulation t = gridWithSplitEdge(SPoint3(0., 0., 0.));
+  ASSERT_EQ(t.triangles.size(), 130u);
 
   const std::vector<std::string> log = remeshWithRecipe(t, 0.1);
   int kept = 0;
@@ -193,18 +203,8 @@ TEST(reparamInputMesh, sliversAreParametrizedWithoutGmshsWarning)
   // the 8 x 8 grid of the unit square with the edge ab of the cells (4, 4)
   // and (4, 3) split by a node 1e-5 off its midpoint: a sliver of gamma
   // about 1e-4, which Reparam's maps take
-  testTriangulation t = rectangleGrid(8, 8, 1., 1.);
-  auto id = [](int i, int j) { return j * 9 + i; };
-  const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
-  const int m = (int)t.points.size();
-  t.points.push_back((t.points[a] + t.points[b]) * 0.5 +
-                     SPoint3(0., -1e-5, 0.));
-  auto it = std::find(t.triangles.begin(), t.triangles.end(),
-                      std::array<int, 3>{{below, b, a}});
-  ASSERT_NE(it, t.triangles.end());
-  *it = {{below, b, m}};
-  t.triangles.push_back({{below, m, a}});
-  t.triangles.push_back({{b, a, m}});
+  const testTriangulation t = gridWithSplitEdge(SPoint3(0., -1e-5, 0.));
+  ASSERT_EQ(t.triangles.size(), 130u);
 
   const std::vector<std::string> log = remeshWithRecipe(t, 0.1);
   int taken = 0;
