@@ -135,8 +135,9 @@ def main():
     print("\nTotal CPU: Reparam %.1f s, stock %.1f s, CGAL %.1f s."
           % (total["reparam"], total["stock"], total["cgal"]))
     print("\nWall seconds, Reparam with General.NumThreads = 1 and 2 (Gmsh "
-          "built with OpenMP: the layout verifies its parts on both threads; "
-          "Reparam's curves and surfaces are meshed on one), CGAL (one "
+          "built with OpenMP: the layout verifies its parts and Mesh2D "
+          "meshes the surfaces on both threads; Reparam's curves are "
+          "meshed on one), CGAL (one "
           "thread), and Reparam's CPU with 2 threads:\n")
     print("| mesh | Reparam wall, 1 thread | 2 threads | 1 / 2 | layout "
           "(split and verify), 1 thread | 2 threads | CPU, 2 threads | CGAL "
