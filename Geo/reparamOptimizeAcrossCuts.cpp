@@ -395,11 +395,13 @@ namespace {
   }
 
   // What optimizeGroup did: nothing to change, changed, or refused (the
-  // group's worst triangle would be worse)
+  // group's worst triangle would be worse, or more of its triangles against
+  // the input)
   enum class groupResult { unchanged, changed, refused };
 
   // refuseWorse: leave the meshes as they are if the worst triangle gets
-  // worse
+  // worse or more triangles point against the input than the faces' own
+  // records count
   groupResult optimizeGroup(const cutGroup &g, bool refuseWorse)
   {
     const double t0 = TimeOfDay();
@@ -530,18 +532,27 @@ int reparamOptimizeMeshedModel(GModel *m)
     return 0;
   int changed = 0;
   const std::set<GEdge *> noise = reparamNoiseFaceCurves(m);
+  // the groups by the layout's cuts alone, for the refused ones (the faces
+  // and curves are the same before and after any group is optimized)
+  std::vector<cutGroup> byCuts;
+  bool grouped = false;
   for(const cutGroup &g : facesJoinedByCuts(m, noise)) {
     if(alreadyOptimized(g)) continue;
     bool crossesNoise = false;
     for(GEdge *ge : g.cuts) crossesNoise = crossesNoise || noise.count(ge);
     // across the curves of a noise face, only if the worst triangle gains
-    // (gmsh2x_pelvis_tlem2: a noise face's curves joined to a group of cut
-    // parts took its kappa min 0.028 -> 0.004, 0.48 without them)
+    // and no more triangles point against the input (gmsh2x_pelvis_tlem2: a
+    // noise face's curves joined to a group of cut parts took its kappa min
+    // 0.028 -> 0.004, 0.48 without them)
     const groupResult r = optimizeGroup(g, crossesNoise);
     if(r == groupResult::changed) changed++;
     if(r != groupResult::refused) continue;
+    if(!grouped) {
+      byCuts = facesJoinedByCuts(m, {});
+      grouped = true;
+    }
     std::set<GFace *> members(g.faces.begin(), g.faces.end());
-    for(const cutGroup &part : facesJoinedByCuts(m, {}))
+    for(const cutGroup &part : byCuts)
       if(members.count(part.faces[0]) &&
          optimizeGroup(part, false) == groupResult::changed)
         changed++;
