@@ -30,6 +30,10 @@ namespace {
   // the curve's segments stay within this share of their length of the
   // input polyline (or no farther than they were)
   const double sag = 0.05;
+  // ... and for the mean, this share: it is not worth cutting a corner of
+  // the curve off (a node on a right-angled corner of a border moved 0.05
+  // of its segments' length off it)
+  const double meanSag = 0.01;
 
   struct triangleAround {
     MTriangle *triangle;
@@ -141,11 +145,12 @@ namespace {
     std::set<GEdge *> curves;
   };
 
-  // One sweep over ge's nodes
+  // One sweep over ge's nodes: those whose worst triangle is below the
+  // target slide to raise it, or, forMean, every node to raise the mean
   void
   slideAlong(GEdge *ge,
              const std::map<MVertex *, std::vector<triangleAround> > &around,
-             faceInputs &inputs, slideCounts &counts)
+             faceInputs &inputs, slideCounts &counts, bool forMean)
   {
     std::vector<SPoint3> polyline;
     if(!reparamInputPolyline(ge, polyline) || polyline.size() < 2) return;
@@ -153,7 +158,9 @@ namespace {
     const double last = polyline.size() - 1.;
     for(MVertex *v : ge->mesh_vertices) {
       auto found = around.find(v);
-      if(found == around.end() || worstOf(found->second) >= target) continue;
+      if(found == around.end() ||
+         (!forMean && worstOf(found->second) >= target))
+        continue;
       auto b = n.before.find(v), a = n.after.find(v);
       if(b == n.before.end() || a == n.after.end()) continue;
       curveNodeRing ring = ringOf(v, found->second);
@@ -162,7 +169,9 @@ namespace {
          !parameterOf(b->second, ge, true, last, ring.before) ||
          !parameterOf(a->second, ge, false, last, ring.after))
         continue;
-      const curveNodeSlide s = slideCurveNode(ring, 1e-3, maxTurn, sag);
+      const curveNodeSlide s =
+        forMean ? slideCurveNodeForMean(ring, target, 1e-3, maxTurn, meanSag) :
+                  slideCurveNode(ring, 1e-3, maxTurn, sag);
       if(s.t == ring.t) continue;
       const GPoint p = ge->point(s.t);
       const SPoint3 to(p.x(), p.y(), p.z());
@@ -230,8 +239,9 @@ int reparamSlideCurveNodes(GModel *m)
   const double before = worstAround(around);
   faceInputs inputs;
   slideCounts counts;
-  for(int sweep = 0; sweep < 2; sweep++)
-    for(GEdge *ge : curves) slideAlong(ge, around, inputs, counts);
+  for(int sweep = 0; sweep < 4; sweep++)
+    for(GEdge *ge : curves)
+      slideAlong(ge, around, inputs, counts, sweep >= 2);
   if(!counts.moved) return 0;
   // the reports' meshes, for the distances measured after
   for(GFace *gf : counts.faces) {

@@ -17,7 +17,9 @@
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "quadEdgeRotation.h"
 #include "quadNodeSmoothing.h"
+#include "quadQuality.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceMeshing.h"
 #include "reparamOptimizeAcrossCuts.h"
@@ -43,8 +45,11 @@ namespace {
       [](GEdge *ge) { return reparamIsCrossableCurve(ge); });
   }
 
-  // The group's elements as one mesh; nodes[i]: point i's node
-  surfaceMesh meshOfGroup(const cutGroup &g, std::vector<MVertex *> &nodes)
+  // The group's elements as one mesh; nodes[i]: point i's node, quads[i]:
+  // quadrangle i's element and part[i] the index of its face in g
+  surfaceMesh meshOfGroup(const cutGroup &g, std::vector<MVertex *> &nodes,
+                          std::vector<MQuadrangle *> &quads,
+                          std::vector<int> &part)
   {
     surfaceMesh m;
     std::map<MVertex *, int> index;
@@ -56,17 +61,80 @@ namespace {
       m.points.push_back(v->point());
       return (int)nodes.size() - 1;
     };
-    for(GFace *gf : g.faces) {
+    for(std::size_t f = 0; f < g.faces.size(); f++) {
+      GFace *gf = g.faces[f];
       for(MTriangle *t : gf->triangles)
         m.triangles.push_back(
           {{indexOf(t->getVertex(0)), indexOf(t->getVertex(1)),
             indexOf(t->getVertex(2))}});
-      for(MQuadrangle *q : gf->quadrangles)
+      for(MQuadrangle *q : gf->quadrangles) {
         m.quadrangles.push_back(
           {{indexOf(q->getVertex(0)), indexOf(q->getVertex(1)),
             indexOf(q->getVertex(2)), indexOf(q->getVertex(3))}});
+        quads.push_back(q);
+        part.push_back((int)f);
+      }
     }
     return m;
+  }
+
+  // The worst and mean eta of m's quadrangles (1 without)
+  void etaOfQuads(const surfaceMesh &m, double &worst, double &mean)
+  {
+    worst = 1.;
+    double sum = 0.;
+    for(const std::array<int, 4> &q : m.quadrangles) {
+      const double eta = quadEta(m.points[q[0]], m.points[q[1]],
+                                 m.points[q[2]], m.points[q[3]]);
+      worst = std::min(worst, eta);
+      sum += eta;
+    }
+    mean = m.quadrangles.empty() ? 1. : sum / m.quadrangles.size();
+  }
+
+  // The segments of the 1D meshes of the group's curves (bounding or
+  // embedded in its faces), as pairs of points (i < j)
+  std::set<std::pair<int, int> >
+  curveSegmentsOf(const cutGroup &g, const std::vector<MVertex *> &nodes)
+  {
+    std::map<MVertex *, int> index;
+    for(std::size_t i = 0; i < nodes.size(); i++) index[nodes[i]] = (int)i;
+    std::set<GEdge *> curves;
+    for(GFace *gf : g.faces) {
+      for(GEdge *ge : gf->edges()) curves.insert(ge);
+      for(GEdge *ge : gf->embeddedEdges()) curves.insert(ge);
+    }
+    std::set<std::pair<int, int> > segments;
+    for(GEdge *ge : curves)
+      for(MLine *l : ge->lines) {
+        auto a = index.find(l->getVertex(0)), b = index.find(l->getVertex(1));
+        if(a == index.end() || b == index.end()) continue;
+        segments.insert(std::make_pair(std::min(a->second, b->second),
+                                       std::max(a->second, b->second)));
+      }
+    return segments;
+  }
+
+  // Rotates the edges between quadrangles of one face towards valence 4
+  // (Mesh/quadEdgeRotation.h), before the node moves square them up;
+  // writes the new corners to the quadrangles
+  quadRotationResult makeRegular(const cutGroup &g, surfaceMesh &m,
+                                 const std::vector<MVertex *> &nodes,
+                                 const std::vector<MQuadrangle *> &quads,
+                                 const std::vector<int> &part,
+                                 const surfaceMesh &input,
+                                 const closestTriangleSearch &onInput)
+  {
+    quadRotationOptions o;
+    o.input = &input;
+    o.onInput = &onInput;
+    const quadRotationResult r =
+      rotateQuadEdges(m, part, curveSegmentsOf(g, nodes), o);
+    if(!r.rotations) return r;
+    for(std::size_t i = 0; i < quads.size(); i++)
+      for(int k = 0; k < 4; k++)
+        quads[i]->setVertex(k, nodes[m.quadrangles[i][k]]);
+    return r;
   }
 
   // The meshes this left, per face (element count and first element): a
@@ -222,7 +290,12 @@ namespace {
     const surfaceMesh input = unionAsTriangles(inputs, nullptr, &inputFace);
     const closestTriangleSearch onInput(input.points, input.triangles);
     std::vector<MVertex *> nodes;
-    surfaceMesh m = meshOfGroup(g, nodes);
+    std::vector<MQuadrangle *> quads;
+    std::vector<int> part;
+    surfaceMesh m = meshOfGroup(g, nodes, quads, part);
+    double etaMinBefore, etaMeanBefore;
+    etaOfQuads(m, etaMinBefore, etaMeanBefore);
+    const quadRotationResult rotated = makeRegular(g, m, nodes, quads, part, input, onInput);
     const std::set<GFace *> faces(g.faces.begin(), g.faces.end());
     const std::set<GEdge *> cuts(g.cuts.begin(), g.cuts.end());
     std::vector<bool> movable(nodes.size());
@@ -239,7 +312,7 @@ namespace {
     const quadSmoothingResult r =
       smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides);
     for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
-    if(!r.moves) return false;
+    if(!r.moves && !rotated.rotations) return false;
     writeSlides(m, nodes, slides, slideFrom);
     const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
     for(GFace *gf : g.faces) {
@@ -248,12 +321,15 @@ namespace {
       reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
     }
     Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
-              "(%lu node moves in %d sweeps, %lu of them along curves, %lu "
+              "(%lu edge rotations, inner nodes not of valence 4 %lu -> %lu; "
+              "%lu node moves in %d sweeps, %lu of them along curves, %lu "
               "of %lu cut curves crossed): eta min %.3g -> %.3g, mean %.3g "
               "-> %.3g (%g s)",
-              g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), r.moves,
-              r.sweeps, r.slides, crossed, g.cuts.size(), r.etaMinBefore,
-              r.etaMinAfter, r.etaMeanBefore, r.etaMeanAfter, TimeOfDay() - t0);
+              g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(),
+              rotated.rotations, rotated.irregularBefore,
+              rotated.irregularAfter, r.moves, r.sweeps, r.slides, crossed,
+              g.cuts.size(), etaMinBefore, r.etaMinAfter, etaMeanBefore,
+              r.etaMeanAfter, TimeOfDay() - t0);
     return true;
   }
 

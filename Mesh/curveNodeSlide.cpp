@@ -88,6 +88,60 @@ SPoint3 pointOnPolyline(const std::vector<SPoint3> &polyline, double t)
   return polyline[i] + (polyline[i + 1] - polyline[i]) * s;
 }
 
+namespace {
+
+  // Parameters to try strictly between the neighbours': an eighth of the
+  // way steps, and the polyline's nodes
+  std::vector<double> candidatesOf(const curveNodeRing &ring)
+  {
+    std::vector<double> candidates;
+    for(int k = 1; k < 8; k++)
+      candidates.push_back(ring.before + (ring.after - ring.before) * k / 8.);
+    for(int i = (int)std::floor(ring.before) + 1; i < ring.after; i++)
+      if(i > ring.before) candidates.push_back(i);
+    return candidates;
+  }
+
+} // namespace
+
+curveNodeSlide slideCurveNodeForMean(const curveNodeRing &ring, double target,
+                                     double gain, double maxTurn, double sag)
+{
+  curveNodeSlide best;
+  best.t = ring.t;
+  const SPoint3 was = pointOnPolyline(ring.polyline, ring.t);
+  double meanBefore = 0.;
+  best.worstBefore = best.worstAfter =
+    worstAt(ring, was, was, M_PI, meanBefore);
+  if(ring.opposite.empty() || !(ring.before < ring.after)) return best;
+  std::vector<double> before;
+  for(const auto &o : ring.opposite)
+    before.push_back(triangleKappa(was, o[0], o[1]));
+  double bestMean = meanBefore + gain;
+  for(double t : candidatesOf(ring)) {
+    if(t == ring.t) continue;
+    const SPoint3 x = pointOnPolyline(ring.polyline, t);
+    double mean = 0.;
+    const double worst = worstAt(ring, x, was, maxTurn, mean);
+    if(worst < best.worstBefore || mean < bestMean ||
+       !followsTheCurve(ring, t, sag))
+      continue;
+    // a triangle below the target left no worse: the slides for the worst
+    // triangles had their turn, and the mean must not undo them
+    bool keepsPoor = true;
+    for(std::size_t i = 0; i < before.size() && keepsPoor; i++) {
+      const double k = triangleKappa(x, ring.opposite[i][0],
+                                     ring.opposite[i][1]);
+      keepsPoor = k >= target || k >= before[i];
+    }
+    if(!keepsPoor) continue;
+    bestMean = mean;
+    best.t = t;
+    best.worstAfter = worst;
+  }
+  return best;
+}
+
 curveNodeSlide slideCurveNode(const curveNodeRing &ring, double gain,
                               double maxTurn, double sag)
 {
@@ -98,13 +152,8 @@ curveNodeSlide slideCurveNode(const curveNodeRing &ring, double gain,
   best.worstBefore = best.worstAfter =
     worstAt(ring, was, was, M_PI, meanBefore);
   if(ring.opposite.empty() || !(ring.before < ring.after)) return best;
-  std::vector<double> candidates;
-  for(int k = 1; k < 8; k++)
-    candidates.push_back(ring.before + (ring.after - ring.before) * k / 8.);
-  for(int i = (int)std::floor(ring.before) + 1; i < ring.after; i++)
-    if(i > ring.before) candidates.push_back(i);
   double bestWorst = best.worstBefore + gain;
-  for(double t : candidates) {
+  for(double t : candidatesOf(ring)) {
     if(t == ring.t) continue;
     const double worst =
       worstAt(ring, pointOnPolyline(ring.polyline, t), was, maxTurn, mean);

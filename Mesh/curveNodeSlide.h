@@ -43,6 +43,16 @@ struct curveNodeSlide {
 curveNodeSlide slideCurveNode(const curveNodeRing &ring, double gain = 1e-3,
                               double maxTurn = 0.5, double sag = 0.05);
 
+// The same, for the ring's mean kappa: the parameter among the same
+// candidates where it is highest, taken if it beats the mean now by `gain`
+// and neither the worst kappa of the ring nor any of its triangles below
+// `target` gets worse (the rows of triangles along the curves, which the
+// moves of inner nodes leave uneven: on the CAD parts most of what keeps
+// kappa mean from 1 is in triangles with a corner on a curve)
+curveNodeSlide slideCurveNodeForMean(const curveNodeRing &ring,
+                                     double target = 0.6, double gain = 1e-3,
+                                     double maxTurn = 0.5, double sag = 0.05);
+
 // Whether the chords from a node at parameter t of the polyline to its
 // neighbours at `before` and `after` follow the polyline within sag times
 // their length, or no worse than from where it was (a node on a corner of

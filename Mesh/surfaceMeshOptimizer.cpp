@@ -70,6 +70,7 @@ namespace {
     }
 
     bool tryFlips(int t);
+    bool tryValenceFlips(int t);
     bool tryMove(int v);
     bool trySmooth(int v, double gain);
     bool spent() const { return _searches >= _budget; }
@@ -130,8 +131,24 @@ namespace {
     }
     // The triangle other than t on edge (a, b), -1 if none or several
     int neighbourAcross(int t, int a, int b) const;
-    bool tryFlip(int t, int k);
+    bool tryFlip(int t, int k, bool forValence = false);
     void replaceCorner(int t, int from, int to);
+    int valenceOf(int v) const;
+    int idealValenceOf(int v) const;
+    // the valences and their ideals, kept from the first valence flip on
+    // (the node moves between do not change them)
+    mutable std::vector<int> _valence, _idealValence;
+    double valenceCost(int v, int change) const
+    {
+      if(_valence.empty()) {
+        for(std::size_t w = 0; w < _m.points.size(); w++) {
+          _valence.push_back(valenceOf((int)w));
+          _idealValence.push_back(idealValenceOf((int)w));
+        }
+      }
+      const double before = _valence[v] - _idealValence[v];
+      return (before + change) * (before + change) - before * before;
+    }
     std::pair<double, double> ringKappa(int v, const SPoint3 &at) const;
     SPoint3 worstTriangleApex(int v) const;
     SPoint3 maxMinPoint(int v) const;
@@ -191,8 +208,49 @@ namespace {
     _around[to].push_back(t);
   }
 
+  // How many points v shares an edge with
+  int optimizer::valenceOf(int v) const
+  {
+    std::vector<int> n;
+    for(int t : _around[v])
+      for(int w : _m.triangles[t])
+        if(w != v) n.push_back(w);
+    std::sort(n.begin(), n.end());
+    return (int)(std::unique(n.begin(), n.end()) - n.begin());
+  }
+
+  // The valence v would have in a mesh of equilateral triangles: 6 where
+  // its triangles close around it, else one more than their angles at v
+  // summed over 60 degrees, rounded (4 on a straight border), at least 2
+  int optimizer::idealValenceOf(int v) const
+  {
+    std::vector<std::pair<int, int> > sides;
+    double angle = 0.;
+    for(int t : _around[v]) {
+      const std::array<int, 3> &c = _m.triangles[t];
+      int k = 0;
+      while(c[k] != v) k++;
+      const int next = c[(k + 1) % 3], previous = c[(k + 2) % 3];
+      sides.push_back(std::make_pair(std::min(v, next), std::max(v, next)));
+      sides.push_back(
+        std::make_pair(std::min(v, previous), std::max(v, previous)));
+      const SVector3 u(_m.points[v], _m.points[next]);
+      const SVector3 w(_m.points[v], _m.points[previous]);
+      angle += std::atan2(crossprod(u, w).norm(), dot(u, w));
+    }
+    std::sort(sides.begin(), sides.end());
+    bool closed = !sides.empty();
+    for(std::size_t i = 0; i < sides.size(); i += 2)
+      closed = closed && i + 1 < sides.size() && sides[i] == sides[i + 1];
+    if(closed) return 6;
+    return std::max(2, (int)std::lround(angle / (M_PI / 3.)) + 1);
+  }
+
   // Edge k of t (corners k, k + 1) flipped if both new triangles are better
-  bool optimizer::tryFlip(int t, int k)
+  // or, forValence, if the four corners' valences come closer to their
+  // ideal (idealValenceOf) and no new triangle falls below the target
+  // unless the pair's worst was below it and the flip does not lower it
+  bool optimizer::tryFlip(int t, int k, bool forValence)
   {
     if(spent()) return false;
     const int a = _m.triangles[t][k], b = _m.triangles[t][(k + 1) % 3];
@@ -209,6 +267,10 @@ namespace {
     int ib = 0;
     while(cs[ib] != b) ib++;
     if(q < 0 || q == p || cs[(ib + 1) % 3] != a) return false;
+    if(forValence && valenceCost(a, -1) + valenceCost(b, -1) +
+                         valenceCost(p, 1) + valenceCost(q, 1) >=
+                       0.)
+      return false;
     for(int r : _around[p]) {
       const std::array<int, 3> &c = _m.triangles[r];
       if(std::find(c.begin(), c.end(), q) != c.end()) return false;
@@ -221,7 +283,15 @@ namespace {
     // (a, b, p) and (b, a, q) become (a, q, p) and (q, b, p)
     const double after = std::min(triangleKappa(x[a], x[q], x[p]),
                                   triangleKappa(x[q], x[b], x[p]));
-    if(after < before + minimalGain) return false;
+    if(forValence) {
+      // where a corner is fixed the node moves after cannot even out what
+      // the flip made worse
+      const bool free =
+        _m.movable[a] && _m.movable[b] && _m.movable[p] && _m.movable[q];
+      if(after < (free ? std::min(before, _o.target) : before)) return false;
+    }
+    else if(after < before + minimalGain)
+      return false;
     if(against(x[a], x[q], x[p]) || against(x[q], x[b], x[p])) return false;
     const double wasFar =
       std::max(distanceToInput(centroidOf(x[a], x[b], x[p])),
@@ -236,6 +306,12 @@ namespace {
     if(far > wasFar + tolerance * x[p].distance(x[q])) return false;
     replaceCorner(t, b, q); // (a, b, p) -> (a, q, p)
     replaceCorner(s, a, p); // (b, a, q) -> (b, p, q) = (q, b, p)
+    if(!_valence.empty()) {
+      _valence[a]--;
+      _valence[b]--;
+      _valence[p]++;
+      _valence[q]++;
+    }
     _known[t] = _known[s] = false;
     _m.against[t] = _m.against[s] = false;
     for(int v : {a, b, p, q}) _dirty[v] = true;
@@ -246,6 +322,13 @@ namespace {
   {
     for(int k = 0; k < 3; k++)
       if(tryFlip(t, k)) return true;
+    return false;
+  }
+
+  bool optimizer::tryValenceFlips(int t)
+  {
+    for(int k = 0; k < 3; k++)
+      if(tryFlip(t, k, true)) return true;
     return false;
   }
 
@@ -725,6 +808,12 @@ namespace {
                   o.searchesPerTriangle * m.triangles.size() + 1000);
     for(int pass = 0; pass < o.smoothPasses && !opt.spent(); pass++) {
       std::size_t changes = 0;
+      if(o.valenceFlips)
+        for(std::size_t t = 0; t < m.triangles.size(); t++) {
+          const bool flipped = opt.tryValenceFlips((int)t);
+          r.flips += flipped;
+          changes += flipped;
+        }
       for(std::size_t v = 0; v < m.points.size(); v++)
         changes += opt.trySmooth((int)v, o.smoothGain);
       r.moves += changes;

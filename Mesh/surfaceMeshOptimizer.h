@@ -91,6 +91,11 @@ struct meshOptimizationOptions {
   // whole run 10-30 % slower), then the targeted flips and moves again
   int smoothPasses = 3;
   double smoothGain = 1e-3;
+  // each sweep begins with flips of the edges whose four corners'
+  // valences come closer to a mesh of equilateral triangles' (6 inside):
+  // an input node inserted in a triangle has valence 3, a collapse leaves
+  // one of 7 or 8, and no node move makes their triangles equilateral
+  bool valenceFlips = true;
   // a smoothing move takes no triangle farther from the input (as a node
   // move, moveTolerance), and leaves the node's old place and the input's
   // points closest to the ring's centroids (on a crease under the feature

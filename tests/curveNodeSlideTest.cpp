@@ -126,3 +126,51 @@ TEST(curveNodeSlide, chordsFollowTheirPolyline)
   // no worse than where it was: allowed
   EXPECT_TRUE(chordsFollowPolyline(p, 11., 11., 5., 15., 0.05));
 }
+
+TEST(curveNodeSlide, forTheMeanTheRingEvensOut)
+{
+  // two triangles above the axis, both good, one better than the other:
+  // the node goes where their kappa summed is highest (under the apex)
+  // without lowering the worst
+  const SPoint3 apex(2., 1.7, 0.);
+  const curveNodeRing ring = ringOnAxis(
+    1.6, {{{SPoint3(4., 0., 0.), apex}}, {{apex, SPoint3(0., 0., 0.)}}});
+  double meanBefore = 0.;
+  for(const auto &o : ring.opposite)
+    meanBefore += triangleKappa(SPoint3(1.6, 0., 0.), o[0], o[1]) / 2.;
+  const curveNodeSlide s = slideCurveNodeForMean(ring);
+  EXPECT_NEAR(s.t, 2., 1e-12);
+  EXPECT_GE(s.worstAfter, s.worstBefore);
+  double meanAfter = 0.;
+  for(const auto &o : ring.opposite)
+    meanAfter += triangleKappa(SPoint3(2., 0., 0.), o[0], o[1]) / 2.;
+  EXPECT_GT(meanAfter, meanBefore + 1e-3);
+  // already there: it stays
+  EXPECT_EQ(slideCurveNodeForMean(ringOnAxis(2., ring.opposite)).t, 2.);
+}
+
+TEST(curveNodeSlide, forTheMeanNoPoorTriangleGetsWorse)
+{
+  // three triangles over the node at 3, kappa 0.02, 0.43 and 0.76: their
+  // sum is highest with the node at 1.5, where the second falls to 0.36;
+  // with the target at 0.6 that is refused, and the node stops at 2, where
+  // every triangle below 0.6 gains
+  const SPoint3 far(0.51, 1.43, 0.), near(0.59, 0.58, 0.);
+  const curveNodeRing ring =
+    ringOnAxis(3., {{{SPoint3(4., 0., 0.), near}},
+                    {{near, far}},
+                    {{far, SPoint3(0., 0., 0.)}}});
+  const curveNodeSlide loose = slideCurveNodeForMean(ring, 0.);
+  const curveNodeSlide strict = slideCurveNodeForMean(ring, 0.6);
+  EXPECT_NEAR(loose.t, 1.5, 1e-12);
+  EXPECT_NEAR(strict.t, 2., 1e-12);
+  const SPoint3 from = pointOnPolyline(ring.polyline, 3.);
+  const SPoint3 to = pointOnPolyline(ring.polyline, strict.t);
+  const SPoint3 looseTo = pointOnPolyline(ring.polyline, loose.t);
+  EXPECT_LT(triangleKappa(looseTo, near, far), triangleKappa(from, near, far));
+  for(const auto &o : ring.opposite) {
+    const double before = triangleKappa(from, o[0], o[1]);
+    if(before < 0.6) EXPECT_GE(triangleKappa(to, o[0], o[1]), before);
+  }
+  EXPECT_GE(strict.worstAfter, strict.worstBefore);
+}

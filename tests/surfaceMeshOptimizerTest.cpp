@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <gtest/gtest.h>
 #include "closestTriangle.h"
 #include "farInputNodes.h"
@@ -184,6 +185,9 @@ TEST(surfaceMeshOptimizer, aFoldIsRepairedLocallyTheRestUnchanged)
   m.size.assign(m.points.size(), 1. / 12.);
   meshOptimizationOptions o;
   o.insertAbove = 0.;
+  // the grid's inner nodes have valence 4 and 8: the valence flips of the
+  // smoothing sweeps would even them out everywhere
+  o.valenceFlips = false;
   const meshOptimizationResult r = optimizeOnInput(m, in, onInput, o);
   EXPECT_GT(r.againstBefore, 0u);
   EXPECT_EQ(r.againstAfter, 0u);
@@ -677,4 +681,68 @@ TEST(surfaceMeshOptimizer, aSliverIsFlippedAcrossARidgeWithinItsOwnTolerance)
   EXPECT_EQ(r.flips, 1u);
   EXPECT_GT(worstKappa(flipped), 0.5);
   EXPECT_EQ(r.againstAfter, 0u);
+}
+
+namespace {
+
+  // n x n unit squares of [0, n]^2 cut by the same diagonal: every inner
+  // node of valence 6
+  optimizableMesh diagonalGrid(int n)
+  {
+    testTriangulation t;
+    for(int j = 0; j <= n; j++)
+      for(int i = 0; i <= n; i++) t.points.push_back(SPoint3(i, j, 0.));
+    for(int j = 0; j < n; j++)
+      for(int i = 0; i < n; i++) {
+        const int a = i + (n + 1) * j, b = a + 1, c = a + n + 1, d = c + 1;
+        t.triangles.push_back({{a, b, d}});
+        t.triangles.push_back({{a, d, c}});
+      }
+    return optimizable(t);
+  }
+
+  std::size_t innerNodesNotOfValence6(const optimizableMesh &m)
+  {
+    std::vector<std::set<int> > neighbours(m.points.size());
+    for(const auto &t : m.triangles)
+      for(int k = 0; k < 3; k++) {
+        neighbours[t[k]].insert(t[(k + 1) % 3]);
+        neighbours[t[(k + 1) % 3]].insert(t[k]);
+      }
+    std::size_t n = 0;
+    for(std::size_t v = 0; v < m.points.size(); v++)
+      n += m.movable[v] && neighbours[v].size() != 6;
+    return n;
+  }
+
+} // namespace
+
+TEST(surfaceMeshOptimizer, valenceFlipsUndoAFlipThatBrokeARegularGrid)
+{
+  // one diagonal of a regular grid flipped: its triangles are as good as
+  // the others (right isosceles), so only the valences (5, 5, 7, 7) tell;
+  // the valence flips put it back, without them it stays
+  const int n = 6;
+  optimizableMesh grid = diagonalGrid(n);
+  const surfaceMesh in = asSurfaceMesh({grid.points, grid.triangles});
+  const closestTriangleSearch onInput(in.points, in.triangles);
+  // cell (2, 2): (a, b, d), (a, d, c) -> (a, b, c), (b, d, c)
+  const int a = 2 + (n + 1) * 2, b = a + 1, c = a + n + 1, d = c + 1;
+  for(auto &t : grid.triangles) {
+    if(t == std::array<int, 3>{{a, b, d}}) t = {{a, b, c}};
+    else if(t == std::array<int, 3>{{a, d, c}})
+      t = {{b, d, c}};
+  }
+  ASSERT_EQ(innerNodesNotOfValence6(grid), 4u);
+  meshOptimizationOptions o;
+  o.insertAbove = 0.;
+  optimizableMesh without = grid;
+  const meshOptimizationResult r = optimizeOnInput(grid, in, onInput, o);
+  EXPECT_EQ(innerNodesNotOfValence6(grid), 0u);
+  EXPECT_GE(r.flips, 1u);
+  EXPECT_GE(r.minAfter, r.minBefore);
+  EXPECT_LT(largestDistance(grid, onInput), 1e-12);
+  o.valenceFlips = false;
+  optimizeOnInput(without, in, onInput, o);
+  EXPECT_EQ(innerNodesNotOfValence6(without), 4u);
 }
