@@ -15,7 +15,7 @@ mkdir -p "$cache"
 
 packages=(build-essential cmake ccache pkg-config dpkg-dev
   libeigen3-dev libmetis-dev libgmm++-dev libann-dev
-  libspectra-dev libarpack2-dev libgtest-dev libsuitesparse-dev
+  libspectra-dev libgtest-dev libsuitesparse-dev
   # the system BLAS (Debian alternative) under UMFPACK/CHOLMOD: UMFPACK's
   # LU of the mean-value map is 1.5x faster with it on 50k unknowns
   libopenblas0-serial
