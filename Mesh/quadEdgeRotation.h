@@ -38,7 +38,7 @@ struct quadRotationOptions {
   // same side of the input under its centre as the old pair was
   const surfaceMesh *input = nullptr;
   const closestTriangleSearch *onInput = nullptr;
-  double tolerance = 0.1;
+  double tolerance = 0.02;
 };
 
 struct quadRotationResult {
