@@ -34,6 +34,16 @@ namespace {
   // the curve off (a node on a right-angled corner of a border moved 0.05
   // of its segments' length off it)
   const double meanSag = 0.01;
+  // a node slides onto the polyline's node its chords pass farther from
+  // than this share of their length (the optimization inserts the input
+  // nodes a face's mesh passes a quarter of its edges from), if the worst
+  // triangle around stays at or above the lower of its worst and
+  // fidelityFloor (the optimization's target: with 0.5 gmsh2x_linkrod2's
+  // kappa min fell 0.606 -> 0.526), and no triangle turns by more than
+  // fidelityTurn (radians): onto a tip they turn with the input (with 0.5,
+  // gmsh2x_skull's farthest input node, the tip of a spike a curve runs
+  // over, stayed 0.28 sizes off the mesh)
+  const double cutOff = 0.25, fidelityFloor = 0.6, fidelityTurn = 1.;
 
   struct triangleAround {
     MTriangle *triangle;
@@ -145,12 +155,17 @@ namespace {
     std::set<GEdge *> curves;
   };
 
-  // One sweep over ge's nodes: those whose worst triangle is below the
-  // target slide to raise it, or, forMean, every node to raise the mean
+  // What a sweep slides the nodes for
+  enum class slideFor { fidelity, worst, mean };
+
+  // One sweep over ge's nodes: for fidelity, every node whose chords cut
+  // the curve's polyline off by more than a quarter of their length; for
+  // the worst triangle, those whose worst is below the target; for the
+  // mean, every node
   void
   slideAlong(GEdge *ge,
              const std::map<MVertex *, std::vector<triangleAround> > &around,
-             faceInputs &inputs, slideCounts &counts, bool forMean)
+             faceInputs &inputs, slideCounts &counts, slideFor aim)
   {
     std::vector<SPoint3> polyline;
     if(!reparamInputPolyline(ge, polyline) || polyline.size() < 2) return;
@@ -159,7 +174,7 @@ namespace {
     for(MVertex *v : ge->mesh_vertices) {
       auto found = around.find(v);
       if(found == around.end() ||
-         (!forMean && worstOf(found->second) >= target))
+         (aim == slideFor::worst && worstOf(found->second) >= target))
         continue;
       auto b = n.before.find(v), a = n.after.find(v);
       if(b == n.before.end() || a == n.after.end()) continue;
@@ -170,8 +185,11 @@ namespace {
          !parameterOf(a->second, ge, false, last, ring.after))
         continue;
       const curveNodeSlide s =
-        forMean ? slideCurveNodeForMean(ring, target, 1e-3, maxTurn, meanSag) :
-                  slideCurveNode(ring, 1e-3, maxTurn, sag);
+        aim == slideFor::mean ?
+          slideCurveNodeForMean(ring, target, 1e-3, maxTurn, meanSag) :
+        aim == slideFor::worst ?
+          slideCurveNode(ring, 1e-3, maxTurn, sag) :
+          slideCurveNodeToFarthest(ring, cutOff, fidelityFloor, fidelityTurn);
       if(s.t == ring.t) continue;
       const GPoint p = ge->point(s.t);
       const SPoint3 to(p.x(), p.y(), p.z());
@@ -239,9 +257,9 @@ int reparamSlideCurveNodes(GModel *m)
   const double before = worstAround(around);
   faceInputs inputs;
   slideCounts counts;
-  for(int sweep = 0; sweep < 4; sweep++)
-    for(GEdge *ge : curves)
-      slideAlong(ge, around, inputs, counts, sweep >= 2);
+  for(slideFor aim : {slideFor::fidelity, slideFor::worst, slideFor::worst,
+                      slideFor::mean, slideFor::mean})
+    for(GEdge *ge : curves) slideAlong(ge, around, inputs, counts, aim);
   if(!counts.moved) return 0;
   // the reports' meshes, for the distances measured after
   for(GFace *gf : counts.faces) {

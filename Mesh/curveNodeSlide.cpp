@@ -142,6 +142,64 @@ curveNodeSlide slideCurveNodeForMean(const curveNodeRing &ring, double target,
   return best;
 }
 
+namespace {
+
+  // The polyline's node strictly between parameters `before` and `after`
+  // (other than t) farthest from the chords of a node at t to them, its
+  // distance in `farthest` and the length of its chord in `chord`; -1 if
+  // none
+  int farthestFromChords(const std::vector<SPoint3> &polyline, double t,
+                         double before, double after, double &farthest,
+                         double &chord)
+  {
+    const SPoint3 a = pointOnPolyline(polyline, before);
+    const SPoint3 x = pointOnPolyline(polyline, t);
+    const SPoint3 b = pointOnPolyline(polyline, after);
+    int found = -1;
+    farthest = 0.;
+    for(int i = (int)std::floor(before) + 1;
+        i < after && i < (int)polyline.size(); i++) {
+      if(i <= before || i == t) continue;
+      const bool first = i < t;
+      const SPoint3 &p = polyline[i];
+      const double d =
+        p.distance(closestPointOnSegment(p, first ? a : x, first ? x : b));
+      if(d > farthest) {
+        farthest = d;
+        found = i;
+        chord = first ? a.distance(x) : x.distance(b);
+      }
+    }
+    return found;
+  }
+
+} // namespace
+
+curveNodeSlide slideCurveNodeToFarthest(const curveNodeRing &ring,
+                                        double share, double floor,
+                                        double maxTurn)
+{
+  curveNodeSlide best;
+  best.t = ring.t;
+  const SPoint3 was = pointOnPolyline(ring.polyline, ring.t);
+  double mean = 0.;
+  best.worstBefore = best.worstAfter = worstAt(ring, was, was, M_PI, mean);
+  if(ring.opposite.empty() || !(ring.before < ring.after)) return best;
+  double farthest, chord = 0.;
+  const int i = farthestFromChords(ring.polyline, ring.t, ring.before,
+                                   ring.after, farthest, chord);
+  if(i < 0 || !(farthest > share * chord)) return best;
+  double after, chordAfter;
+  farthestFromChords(ring.polyline, i, ring.before, ring.after, after,
+                     chordAfter);
+  if(!(after < farthest)) return best;
+  const double worst = worstAt(ring, ring.polyline[i], was, maxTurn, mean);
+  if(worst < std::min(best.worstBefore, floor)) return best;
+  best.t = i;
+  best.worstAfter = worst;
+  return best;
+}
+
 curveNodeSlide slideCurveNode(const curveNodeRing &ring, double gain,
                               double maxTurn, double sag)
 {

@@ -53,6 +53,19 @@ curveNodeSlide slideCurveNodeForMean(const curveNodeRing &ring,
                                      double target = 0.6, double gain = 1e-3,
                                      double maxTurn = 0.5, double sag = 0.05);
 
+// For fidelity: the polyline's node strictly between the neighbours'
+// farthest from the node's chords to them, where farther than `share`
+// times that chord's length (the 1D mesh cuts a tip or a crease of the
+// curve off; the optimization inserts the input nodes a face's mesh cuts
+// off, but a curve's are on no face's inside), taken if the chords then
+// pass closer to the polyline, the worst kappa of the ring stays at or
+// above the lower of its worst now and `floor`, and no triangle's normal
+// turns by more than maxTurn
+curveNodeSlide slideCurveNodeToFarthest(const curveNodeRing &ring,
+                                        double share = 0.25,
+                                        double floor = 0.5,
+                                        double maxTurn = 0.5);
+
 // Whether the chords from a node at parameter t of the polyline to its
 // neighbours at `before` and `after` follow the polyline within sag times
 // their length, or no worse than from where it was (a node on a corner of

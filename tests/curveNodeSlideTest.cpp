@@ -156,10 +156,9 @@ TEST(curveNodeSlide, forTheMeanNoPoorTriangleGetsWorse)
   // with the target at 0.6 that is refused, and the node stops at 2, where
   // every triangle below 0.6 gains
   const SPoint3 far(0.51, 1.43, 0.), near(0.59, 0.58, 0.);
-  const curveNodeRing ring =
-    ringOnAxis(3., {{{SPoint3(4., 0., 0.), near}},
-                    {{near, far}},
-                    {{far, SPoint3(0., 0., 0.)}}});
+  const curveNodeRing ring = ringOnAxis(3., {{{SPoint3(4., 0., 0.), near}},
+                                             {{near, far}},
+                                             {{far, SPoint3(0., 0., 0.)}}});
   const curveNodeSlide loose = slideCurveNodeForMean(ring, 0.);
   const curveNodeSlide strict = slideCurveNodeForMean(ring, 0.6);
   EXPECT_NEAR(loose.t, 1.5, 1e-12);
@@ -173,4 +172,60 @@ TEST(curveNodeSlide, forTheMeanNoPoorTriangleGetsWorse)
     if(before < 0.6) EXPECT_GE(triangleKappa(to, o[0], o[1]), before);
   }
   EXPECT_GE(strict.worstAfter, strict.worstBefore);
+}
+
+namespace {
+
+  // The x axis from 0 to 4 with a tip at x = 2 (y = 1.5): a node at 1.5
+  // (half way up) between neighbours at 0 and 4 cuts it off by a third of
+  // its chord
+  curveNodeRing ringUnderATip(const std::vector<std::array<SPoint3, 2> > &o)
+  {
+    curveNodeRing ring;
+    ring.polyline = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.),
+                     SPoint3(2., 1.5, 0.), SPoint3(3., 0., 0.),
+                     SPoint3(4., 0., 0.)};
+    ring.t = 1.5;
+    ring.before = 0.;
+    ring.after = 4.;
+    ring.opposite = o;
+    return ring;
+  }
+
+} // namespace
+
+TEST(curveNodeSlide, forFidelityANodeGoesOntoTheTipItsChordsCutOff)
+{
+  // triangles below the curve, apex at (2, -1.7): on the tip the node's
+  // triangles are good, and the chords follow the polyline
+  const SPoint3 apex(2., -1.7, 0.);
+  const curveNodeRing ring = ringUnderATip(
+    {{{apex, SPoint3(4., 0., 0.)}}, {{SPoint3(0., 0., 0.), apex}}});
+  const curveNodeSlide s = slideCurveNodeToFarthest(ring);
+  EXPECT_EQ(s.t, 2.);
+  EXPECT_GE(s.worstAfter, std::min(s.worstBefore, 0.5));
+  // on the tip nothing is cut off any more: it stays
+  curveNodeRing there = ring;
+  there.t = 2.;
+  EXPECT_EQ(slideCurveNodeToFarthest(there).t, 2.);
+  // a tip a fortieth of the chord off is left (share 0.25)
+  curveNodeRing low = ring;
+  low.polyline[2] = SPoint3(2., 0.1, 0.);
+  EXPECT_EQ(slideCurveNodeToFarthest(low).t, 1.5);
+}
+
+TEST(curveNodeSlide, forFidelityNoTriangleBelowTheFloor)
+{
+  // apex at (0.6, -1.6): the worst triangle 0.76 now, 0.61 on the tip;
+  // refused with the floor at 0.7, taken with 0.5
+  const SPoint3 apex(0.6, -1.6, 0.);
+  const curveNodeRing ring = ringUnderATip(
+    {{{apex, SPoint3(4., 0., 0.)}}, {{SPoint3(0., 0., 0.), apex}}});
+  const curveNodeSlide strict = slideCurveNodeToFarthest(ring, 0.25, 0.7, 1.5);
+  EXPECT_EQ(strict.t, 1.5);
+  EXPECT_GT(strict.worstBefore, 0.75);
+  const curveNodeSlide loose = slideCurveNodeToFarthest(ring, 0.25, 0.5, 1.5);
+  EXPECT_EQ(loose.t, 2.);
+  EXPECT_LT(loose.worstAfter, 0.7);
+  EXPECT_GE(loose.worstAfter, 0.5);
 }
