@@ -536,14 +536,6 @@ int reparamOptimizeMeshedModel(GModel *m)
   // and curves are the same before and after any group is optimized)
   std::vector<cutGroup> byCuts;
   bool grouped = false;
-  // the faces joined by the noise faces' curves alone (their cuts, crossed
-  // by then, may be crossed again)
-  const std::vector<cutGroup> byNoise = facesJoinedBy(
-    m, [](GFace *gf) { return reparamOptimizableFace(gf); },
-    [&noise](GEdge *ge) { return noise.count(ge) > 0; }, false,
-    [&noise](GEdge *ge) {
-      return noise.count(ge) > 0 || reparamIsCrossableCurve(ge);
-    });
   for(const cutGroup &g : facesJoinedByCuts(m, noise)) {
     if(alreadyOptimized(g)) continue;
     bool crossesNoise = false;
@@ -566,13 +558,7 @@ int reparamOptimizeMeshedModel(GModel *m)
       if(members.count(part.faces[0]) && !alreadyOptimized(part) &&
          optimizeGroup(part, false) == groupResult::changed)
         changed++;
-    // then each noise face with the faces across its curves only: the rest
-    // of the group is optimized already (the whole group again took
-    // armadillo's 47 faces another 0.43 s)
-    for(const cutGroup &around : byNoise)
-      if(members.count(around.faces[0]) &&
-         optimizeGroup(around, true) == groupResult::changed)
-        changed++;
+    changed += optimizeGroup(g, true) == groupResult::changed;
   }
   // then the nodes of the curves no optimizer moved
   if(reparamSlideCurveNodes(m)) changed++;
