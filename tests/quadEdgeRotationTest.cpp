@@ -8,23 +8,9 @@
 #include "meshFidelity.h"
 #include "quadEdgeRotation.h"
 #include "quadQuality.h"
+#include "testPatches.h"
 
 namespace {
-
-  // n x n unit squares over [0, n]^2, corners counterclockwise; point (i,
-  // j) is i + (n + 1) j, quadrangle (i, j) is i + n j
-  surfaceMesh quadGrid(int n)
-  {
-    surfaceMesh m;
-    for(int j = 0; j <= n; j++)
-      for(int i = 0; i <= n; i++) m.points.push_back(SPoint3(i, j, 0.));
-    for(int j = 0; j < n; j++)
-      for(int i = 0; i < n; i++) {
-        const int a = i + (n + 1) * j;
-        m.quadrangles.push_back({{a, a + 1, a + n + 2, a + n + 1}});
-      }
-    return m;
-  }
 
   int point(int n, int i, int j) { return i + (n + 1) * j; }
 

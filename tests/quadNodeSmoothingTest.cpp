@@ -14,21 +14,6 @@
 
 namespace {
 
-  // n x n unit-square quadrangles over [0, n]^2 (z = 0), corners
-  // counterclockwise; point (i, j) is i + (n + 1) j
-  surfaceMesh quadGrid(int n)
-  {
-    surfaceMesh m;
-    for(int j = 0; j <= n; j++)
-      for(int i = 0; i <= n; i++) m.points.push_back(SPoint3(i, j, 0.));
-    for(int j = 0; j < n; j++)
-      for(int i = 0; i < n; i++) {
-        const int a = i + (n + 1) * j;
-        m.quadrangles.push_back({{a, a + 1, a + n + 2, a + n + 1}});
-      }
-    return m;
-  }
-
   std::vector<bool> innerNodes(int n)
   {
     std::vector<bool> movable((n + 1) * (n + 1), false);

@@ -278,3 +278,16 @@ surfaceMesh asSurfaceMesh(const testTriangulation &t)
   m.triangles = t.triangles;
   return m;
 }
+
+surfaceMesh quadGrid(int n)
+{
+  surfaceMesh m;
+  for(int j = 0; j <= n; j++)
+    for(int i = 0; i <= n; i++) m.points.push_back(SPoint3(i, j, 0.));
+  for(int j = 0; j < n; j++)
+    for(int i = 0; i < n; i++) {
+      const int a = i + (n + 1) * j;
+      m.quadrangles.push_back({{a, a + 1, a + n + 2, a + n + 1}});
+    }
+  return m;
+}

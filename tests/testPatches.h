@@ -81,6 +81,11 @@ discretePatch makePatchOrDie(const testTriangulation &t);
 struct surfaceMesh;
 surfaceMesh asSurfaceMesh(const testTriangulation &t);
 
+// n x n unit-square quadrangles over [0, n]^2 (z = 0), corners
+// counterclockwise; point (i, j) is i + (n + 1) j, quadrangle (i, j) is
+// i + n j
+surfaceMesh quadGrid(int n);
+
 // Twice the signed area of triangle t in the uv plane (uv: 2 values per node)
 double uvArea2(const std::vector<double> &uv, const std::array<int, 3> &t);
 
