@@ -18,14 +18,13 @@ class GModel;
 // Slides the nodes of m's discrete curves: first onto the polyline's
 // nodes their chords pass farther than a quarter of their length from
 // (Mesh/curveNodeSlide.h, slideCurveNodeToFarthest), then, in two sweeps,
-// those whose worst
-// triangle around is below kappa 0.6 where it raises that worst kappa,
-// then, in two more, every node where the ring's mean kappa rises; each
-// where no triangle turns over (nor by more than 30 degrees, 57 onto a
-// polyline's node), none changes sides with the input (against it or not)
-// and the curve's segments follow its polyline; only between faces Reparam
-// parametrized, meshed with triangles, not kept as their input. Logs what
-// it did; returns how many nodes moved
+// those whose worst triangle around is below kappa 0.6 where it raises
+// that worst kappa, then, in two more, every node where the ring's mean
+// kappa rises; each where no triangle turns over (nor by more than 30
+// degrees, 57 onto a polyline's node), none changes sides with the input
+// (against it or not) and the curve's segments follow its polyline; only
+// between faces Reparam parametrized, meshed with triangles, not kept as
+// their input. Logs what it did; returns how many nodes moved
 int reparamSlideCurveNodes(GModel *m);
 
 #endif
