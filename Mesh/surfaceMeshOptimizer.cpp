@@ -71,6 +71,10 @@ namespace {
 
     bool tryFlips(int t);
     bool tryValenceFlips(int t);
+    // no valence flip makes a triangle worse than this (unless its pair
+    // was): the target, or the mesh's worst when that is higher, so that the
+    // flips never lower the worst kappa of a mesh
+    double valenceFloor = 0.6;
     bool tryMove(int v);
     bool trySmooth(int v, double gain);
     bool spent() const { return _searches >= _budget; }
@@ -248,7 +252,7 @@ namespace {
 
   // Edge k of t (corners k, k + 1) flipped if both new triangles are better
   // or, forValence, if the four corners' valences come closer to their
-  // ideal (idealValenceOf) and no new triangle falls below the target
+  // ideal (idealValenceOf) and no new triangle falls below valenceFloor
   // unless the pair's worst was below it and the flip does not lower it
   bool optimizer::tryFlip(int t, int k, bool forValence)
   {
@@ -288,7 +292,8 @@ namespace {
       // the flip made worse
       const bool free =
         _m.movable[a] && _m.movable[b] && _m.movable[p] && _m.movable[q];
-      if(after < (free ? std::min(before, _o.target) : before)) return false;
+      if(after < (free ? std::min(before, valenceFloor) : before))
+        return false;
     }
     else if(after < before + minimalGain)
       return false;
@@ -806,6 +811,7 @@ namespace {
     std::size_t searches = 0;
     optimizer opt(m, input, onInput, o, searches,
                   o.searchesPerTriangle * m.triangles.size() + 1000);
+    opt.valenceFloor = std::max(o.target, worstKappa(m));
     for(int pass = 0; pass < o.smoothPasses && !opt.spent(); pass++) {
       std::size_t changes = 0;
       if(o.valenceFlips)
