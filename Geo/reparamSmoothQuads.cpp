@@ -79,20 +79,6 @@ namespace {
     return m;
   }
 
-  // The worst and mean eta of m's quadrangles (1 without)
-  void etaOfQuads(const surfaceMesh &m, double &worst, double &mean)
-  {
-    worst = 1.;
-    double sum = 0.;
-    for(const std::array<int, 4> &q : m.quadrangles) {
-      const double eta =
-        quadEta(m.points[q[0]], m.points[q[1]], m.points[q[2]], m.points[q[3]]);
-      worst = std::min(worst, eta);
-      sum += eta;
-    }
-    mean = m.quadrangles.empty() ? 1. : sum / m.quadrangles.size();
-  }
-
   // The segments of the 1D meshes of the group's curves (bounding or
   // embedded in its faces), as pairs of points (i < j)
   std::set<std::pair<int, int> >
@@ -295,7 +281,7 @@ namespace {
     std::vector<int> part;
     surfaceMesh m = meshOfGroup(g, nodes, quads, part);
     double etaMinBefore, etaMeanBefore;
-    etaOfQuads(m, etaMinBefore, etaMeanBefore);
+    etaOfQuadrangles(m, etaMinBefore, etaMeanBefore);
     const quadRotationResult rotated =
       makeRegular(g, m, nodes, quads, part, input, onInput);
     const std::set<GFace *> faces(g.faces.begin(), g.faces.end());

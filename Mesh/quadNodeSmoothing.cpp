@@ -285,19 +285,6 @@ namespace {
     return points;
   }
 
-  void etaOf(const surfaceMesh &m, double &worst, double &mean)
-  {
-    worst = 1.;
-    mean = 0.;
-    for(const std::array<int, 4> &q : m.quadrangles) {
-      const double eta =
-        quadEta(m.points[q[0]], m.points[q[1]], m.points[q[2]], m.points[q[3]]);
-      worst = std::min(worst, eta);
-      mean += eta;
-    }
-    mean = m.quadrangles.empty() ? 1. : mean / m.quadrangles.size();
-  }
-
 } // namespace
 
 quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
@@ -313,7 +300,7 @@ quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
            (slides && (*slides)[v].polyline);
   };
   quadSmoothingResult r;
-  etaOf(m, r.etaMinBefore, r.etaMeanBefore);
+  etaOfQuadrangles(m, r.etaMinBefore, r.etaMeanBefore);
   landing.assign(m.points.size(), -1);
   const elementList list(m);
   nodeMover mover(m, list, onInput, o);
@@ -343,6 +330,6 @@ quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
     if(!moved) break;
   }
   r.searches = mover.searches();
-  etaOf(m, r.etaMinAfter, r.etaMeanAfter);
+  etaOfQuadrangles(m, r.etaMinAfter, r.etaMeanAfter);
   return r;
 }

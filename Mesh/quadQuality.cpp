@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include "SVector3.h"
+#include "meshFidelity.h"
 #include "quadQuality.h"
 
 double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
@@ -20,4 +21,17 @@ double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
     worst = std::max(worst, std::fabs(M_PI / 2. - alpha));
   }
   return std::max(1. - 2. / M_PI * worst, 0.);
+}
+
+void etaOfQuadrangles(const surfaceMesh &m, double &worst, double &mean)
+{
+  worst = 1.;
+  double sum = 0.;
+  for(const std::array<int, 4> &q : m.quadrangles) {
+    const double eta =
+      quadEta(m.points[q[0]], m.points[q[1]], m.points[q[2]], m.points[q[3]]);
+    worst = std::min(worst, eta);
+    sum += eta;
+  }
+  mean = m.quadrangles.empty() ? 1. : sum / m.quadrangles.size();
 }

@@ -13,4 +13,8 @@
 double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
                const SPoint3 &p3);
 
+// The worst and the mean eta of m's quadrangles (1 and 1 without any)
+struct surfaceMesh;
+void etaOfQuadrangles(const surfaceMesh &m, double &worst, double &mean);
+
 #endif

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include "efficiencyIndex.h"
+#include "meshFidelity.h"
 #include "quadQuality.h"
 #include "testPatches.h"
 
@@ -32,6 +33,29 @@ TEST(quadQuality, flatOrReflexCornerIsZero)
   EXPECT_EQ(quadEta(SPoint3(0, 0, 0), SPoint3(1, 0.3, 0), SPoint3(2, 0, 0),
                     SPoint3(1, 1, 0)),
             0.);
+}
+
+TEST(quadQuality, worstAndMeanOfAMesh)
+{
+  // a 2 x 2 grid of squares, then one corner node pulled so that the
+  // quadrangle at it (and only that one) loses its right angles
+  surfaceMesh m = quadGrid(2);
+  double worst, mean;
+  etaOfQuadrangles(m, worst, mean);
+  EXPECT_NEAR(worst, 1., 1e-12);
+  EXPECT_NEAR(mean, 1., 1e-12);
+  m.points[0] = SPoint3(-0.5, 0., 0.);
+  const std::array<int, 4> &q = m.quadrangles[0];
+  const double pulled =
+    quadEta(m.points[q[0]], m.points[q[1]], m.points[q[2]], m.points[q[3]]);
+  etaOfQuadrangles(m, worst, mean);
+  EXPECT_LT(pulled, 0.8);
+  EXPECT_NEAR(worst, pulled, 1e-12);
+  EXPECT_NEAR(mean, (3. + pulled) / 4., 1e-12);
+  // no quadrangle: 1 and 1
+  etaOfQuadrangles(surfaceMesh(), worst, mean);
+  EXPECT_EQ(worst, 1.);
+  EXPECT_EQ(mean, 1.);
 }
 
 TEST(efficiencyIndex, unitEdgesGiveHundredPercent)
