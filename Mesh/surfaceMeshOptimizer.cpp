@@ -69,8 +69,8 @@ namespace {
       return list;
     }
 
-    bool tryFlips(int t);
-    bool tryValenceFlips(int t);
+    // the first of t's edges tryFlip flips
+    bool tryFlips(int t, bool forValence = false);
     // no valence flip makes a triangle worse than this (unless its pair
     // was): the target, or the mesh's worst when that is higher, so that the
     // flips never lower the worst kappa of a mesh
@@ -323,17 +323,10 @@ namespace {
     return true;
   }
 
-  bool optimizer::tryFlips(int t)
+  bool optimizer::tryFlips(int t, bool forValence)
   {
     for(int k = 0; k < 3; k++)
-      if(tryFlip(t, k)) return true;
-    return false;
-  }
-
-  bool optimizer::tryValenceFlips(int t)
-  {
-    for(int k = 0; k < 3; k++)
-      if(tryFlip(t, k, true)) return true;
+      if(tryFlip(t, k, forValence)) return true;
     return false;
   }
 
@@ -816,7 +809,7 @@ namespace {
       std::size_t changes = 0;
       if(o.valenceFlips)
         for(std::size_t t = 0; t < m.triangles.size(); t++) {
-          const bool flipped = opt.tryValenceFlips((int)t);
+          const bool flipped = opt.tryFlips((int)t, true);
           r.flips += flipped;
           changes += flipped;
         }
