@@ -3,6 +3,7 @@
 #include <algorithm>
 #include "GFace.h"
 #include "GModel.h"
+#include "OpenFile.h"
 #include "reparamPluginRegistration.h"
 #include "SurfaceMeshQuality.h"
 #include "faceQuality.h"
@@ -15,6 +16,9 @@ StringXNumber SurfaceMeshQualityOptions_Number[] = {
   {GMSH_FULLRC, "SurfaceTag", nullptr, -1.},
   {GMSH_FULLRC, "CreateViews", nullptr, 1.},
   {GMSH_FULLRC, "HistogramBins", nullptr, 20.}};
+
+StringXString SurfaceMeshQualityOptions_String[] = {
+  {GMSH_FULLRC, "Reference", nullptr, ""}};
 
 static const bool surfaceMeshQualityRegistered =
   registerReparamPlugin<GMSH_SurfaceMeshQualityPlugin>("SurfaceMeshQuality");
@@ -31,6 +35,14 @@ std::string GMSH_SurfaceMeshQualityPlugin::getHelp() const
          "surfaces, the Hausdorff and mean distances to the triangulation "
          "they were parametrized from (in % of its bounding box diagonal) "
          "and the elements pointing against it.\n\n"
+         "If `Reference' names a mesh file (an STL, or any mesh Gmsh "
+         "merges), the measured surfaces are also compared with its "
+         "triangles as one: the Hausdorff and mean distances (in % of its "
+         "bounding box diagonal) and the elements pointing against it, "
+         "whatever made the mesh (another remesher's output merged as an "
+         "STL, against the STL it remeshed). The elements are tested "
+         "against the reference as a whole: across a wall thinner than "
+         "them its other side may be the closest, and count.\n\n"
          "If `CreateViews' is set, Plugin(SurfaceMeshQuality) creates a view "
          "of kappa per triangle, one of eta per quadrangle (if any) and "
          "their histograms over `HistogramBins' bins of [0, 1].";
@@ -44,6 +56,16 @@ int GMSH_SurfaceMeshQualityPlugin::getNbOptions() const
 StringXNumber *GMSH_SurfaceMeshQualityPlugin::getOption(int iopt)
 {
   return &SurfaceMeshQualityOptions_Number[iopt];
+}
+
+int GMSH_SurfaceMeshQualityPlugin::getNbOptionsStr() const
+{
+  return sizeof(SurfaceMeshQualityOptions_String) / sizeof(StringXString);
+}
+
+StringXString *GMSH_SurfaceMeshQualityPlugin::getOptionStr(int iopt)
+{
+  return &SurfaceMeshQualityOptions_String[iopt];
 }
 
 namespace {
@@ -74,6 +96,44 @@ namespace {
       for(int &n : q) n += offset;
       all.quadrangles.push_back(q);
     }
+  }
+
+  // The elements of the mesh file `name`, merged into a model of its own
+  // (the current one is left as it was); false if it has none
+  bool readReference(const std::string &name, surfaceMesh &reference)
+  {
+    GModel *current = GModel::current();
+    const char visible = current->getVisibility();
+    GModel *own = new GModel();
+    GModel::setCurrent(own);
+    const bool read = MergeFile(name, true);
+    if(read)
+      for(auto it = own->firstFace(); it != own->lastFace(); ++it)
+        append(reference, surfaceMeshOf(*it));
+    delete own;
+    GModel::setCurrent(current);
+    current->setVisibility(visible);
+    return read && reference.numElements() > 0;
+  }
+
+  // The measured mesh `all` against the reference file's elements, logged
+  void compareToReference(const std::string &name, const surfaceMesh &all)
+  {
+    surfaceMesh reference;
+    if(!readReference(name, reference)) {
+      Msg::Warning("SurfaceMeshQuality: no surface mesh in reference '%s'",
+                   name.c_str());
+      return;
+    }
+    meshFidelity f = compareToInput(unionAsTriangles({reference}), all);
+    const double percent = f.diagonal > 0. ? 100. / f.diagonal : 0.;
+    // the minority: the reference may be oriented either way
+    Msg::Info("SurfaceMeshQuality: against '%s' (%lu elements): Hausdorff "
+              "%.4g%% (mean %.4g%%) of its diagonal, %lu elements pointing "
+              "against it",
+              name.c_str(), reference.numElements(), percent * f.hausdorff,
+              percent * f.meanDistance,
+              std::min(f.inverted, f.elements - f.inverted));
   }
 
 } // namespace
@@ -133,6 +193,8 @@ PView *GMSH_SurfaceMeshQualityPlugin::execute(PView *v)
       diagonal > 0. && sampled ? 100. * meanDistance / sampled / diagonal : 0.,
       inverted);
   }
+  const std::string reference = SurfaceMeshQualityOptions_String[0].def;
+  if(!reference.empty()) compareToReference(reference, all);
   if(!views) return v;
 
   std::vector<double> quality = elementQualities(all);

@@ -2,7 +2,9 @@
 //
 // Plugin(SurfaceMeshQuality): quality of any surface mesh (stock Gmsh meshes
 // too): kappa, eta, tau and, for discrete faces, the distance to their input
-// triangulation; views of kappa / eta per element and their histograms.
+// triangulation, or to a reference mesh file for any mesh (another
+// remesher's output against its input); views of kappa / eta per element
+// and their histograms.
 
 #ifndef SURFACE_MESH_QUALITY_H
 #define SURFACE_MESH_QUALITY_H
@@ -20,6 +22,8 @@ public:
   std::string getAuthor() const { return "Reparam"; }
   int getNbOptions() const;
   StringXNumber *getOption(int iopt);
+  int getNbOptionsStr() const;
+  StringXString *getOptionStr(int iopt);
   PView *execute(PView *);
 };
 

@@ -38,8 +38,44 @@ def stage_seconds(log):
     return out
 
 
-def run_gmsh(gmsh, stl, map_value, size, timeout, threads=1):
-    """(status, CPU, stages); stages["wall"]: the process's wall seconds."""
+QUALITY = [
+    ("kmin", r"kappa min ([0-9.eE+-]+)"),
+    ("kmean", r"kappa min [0-9.eE+-]+ mean ([0-9.eE+-]+)"),
+    ("tau", r"tau ([0-9.eE+-]+)%"),
+    ("hausdorff", r"against '.*' \(\d+ elements\): Hausdorff ([0-9.eE+-]+)%"),
+    ("against", r"of its diagonal, (\d+) elements pointing"),
+]
+
+
+def measure(gmsh, mesh, stl, size, timeout):
+    """Plugin(SurfaceMeshQuality) on the mesh file `mesh`, against the STL it
+    was made from (Reference): the same measures for every remesher's
+    output. A dict of QUALITY's names (None where missing)."""
+    with tempfile.TemporaryDirectory(prefix="reparam-quality-") as folder:
+        geo = os.path.join(folder, "quality.geo")
+        with open(geo, "w") as f:
+            f.write("\n".join([
+                'Merge "%s";' % os.path.abspath(mesh),
+                "Mesh.MeshSizeMin = %.9g;" % size,
+                "Mesh.MeshSizeMax = %.9g;" % size,
+                "Plugin(SurfaceMeshQuality).CreateViews = 0;",
+                'Plugin(SurfaceMeshQuality).Reference = "%s";'
+                % os.path.abspath(stl),
+                "Plugin(SurfaceMeshQuality).Run;", ""]))
+        log = os.path.join(folder, "quality.log")
+        status, _ = coverage.run_gmsh(gmsh, geo, log, timeout)
+        text_ = open(log, errors="replace").read()
+        out = {}
+        for name, pattern in QUALITY:
+            m = re.search(pattern, text_)
+            out[name] = float(m.group(1)) if m and not status else None
+        return out
+
+
+def run_gmsh(gmsh, stl, map_value, size, timeout, threads=1, quality=None):
+    """(status, CPU, stages); stages["wall"]: the process's wall seconds;
+    with quality (the gmsh executable to measure with), stages["quality"]:
+    measure()'s of the mesh written."""
     with tempfile.TemporaryDirectory(prefix="reparam-speed-") as folder:
         geo = os.path.join(folder, "recipe.geo")
         with open(geo, "w") as f:
@@ -51,6 +87,9 @@ def run_gmsh(gmsh, stl, map_value, size, timeout, threads=1):
         wall = time.time() - start
         stages = stage_seconds(log)
         stages["wall"] = wall
+        out_msh = os.path.join(folder, "out.msh")
+        if quality and os.path.exists(out_msh):
+            stages["quality"] = measure(quality, out_msh, stl, size, timeout)
         if stages["triangles"] is None:
             try:
                 out = coverage.read_msh_surface(os.path.join(folder, "out.msh"))
@@ -108,13 +147,15 @@ def run_floor(gmsh, stl, triangles, timeout):
                 "classifyWall": w1 - w0, "squareWall": w2 - w0}
 
 
-def run_cgal(cgal, stl, size, timeout):
-    """(status, CPU, triangles, wall)"""
+def run_cgal(cgal, stl, size, timeout, out_stl=None):
+    """(status, CPU, triangles, wall); with out_stl, CGAL's mesh written
+    there (after its timing, in the same process)"""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.time()
+    command = [cgal, stl, "%.9g" % size] + (["3", out_stl] if out_stl else [])
     try:
-        out = subprocess.run([cgal, stl, "%.9g" % size], capture_output=True,
-                             text=True, timeout=timeout).stdout
+        out = subprocess.run(command, capture_output=True, text=True,
+                             timeout=timeout).stdout
     except subprocess.TimeoutExpired:
         return "timeout", None, None, None
     wall = time.time() - start
@@ -157,13 +198,26 @@ def main():
     total = {"reparam": 0.0, "stock": 0.0, "cgal": 0.0}
     walls = []
     floors = []
+    qualities = []
     for stl in a.meshes:
         triangles, area = coverage.read_stl(stl)
         size = coverage.mesh_size(area, len(triangles))
-        rs, rcpu, rst = run_gmsh(a.gmsh, stl, 6, size, a.timeout)
-        ss, scpu, sst = run_gmsh(a.gmsh, stl, 0, size, a.timeout)
-        cs, ccpu, ctri, cwall = (run_cgal(a.cgal, stl, size, a.timeout)
-                                 if a.cgal else (None, None, None, None))
+        rs, rcpu, rst = run_gmsh(a.gmsh, stl, 6, size, a.timeout,
+                                 quality=a.gmsh)
+        ss, scpu, sst = run_gmsh(a.gmsh, stl, 0, size, a.timeout,
+                                 quality=a.gmsh)
+        cquality = None
+        if a.cgal:
+            with tempfile.TemporaryDirectory(prefix="reparam-cgal-") as d:
+                out_stl = os.path.join(d, "cgal.stl")
+                cs, ccpu, ctri, cwall = run_cgal(a.cgal, stl, size, a.timeout,
+                                                 out_stl)
+                if not cs and os.path.exists(out_stl):
+                    cquality = measure(a.gmsh, out_stl, stl, size, a.timeout)
+        else:
+            cs, ccpu, ctri, cwall = None, None, None, None
+        qualities.append((coverage.mesh_name(stl), rst.get("quality"),
+                          sst.get("quality"), cquality))
         ts, tcpu, tst = run_gmsh(a.gmsh, stl, 6, size, a.timeout, threads=2)
         tst["cpu"] = tcpu
         walls.append((coverage.mesh_name(stl), rst, tst, cwall))
@@ -206,6 +260,7 @@ def main():
             text(two["cpu"]), text(cgal_wall),
             text(two["wall"] / cgal_wall if cgal_wall else None, "%.1f")))
     print_floors(floors)
+    print_qualities(qualities)
 
 
 
@@ -241,6 +296,27 @@ def print_floors(floors):
                  text(f["squareCpu"] / ccpu, "%.2f"),
                  text(rcpu / f["cpu"], "%.1f"),
             text(f["classifyWall"] + 0.5 * f["squareWall"]), text(cwall)))
+
+
+def print_qualities(qualities):
+    """The three meshes side by side, measured alike"""
+    print("\nQuality side by side, the same meshes: each output merged in "
+          "gmsh and measured by Plugin(SurfaceMeshQuality) with the input "
+          "STL as `Reference` (kappa min / mean, tau in % against the size "
+          "asked, Hausdorff distance in % of the input's diagonal).\n")
+    print("| mesh | Reparam | stock | CGAL |")
+    print("|---|---|---|---|")
+
+    def cell(q):
+        if not q or q.get("kmin") is None:
+            return "-"
+        return "%s / %s / %s / %s" % (
+            text(q["kmin"], "%.3f"), text(q["kmean"], "%.3f"),
+            text(q["tau"], "%.1f"), text(q["hausdorff"], "%.3f"))
+
+    for name, reparam, stock, cgal in qualities:
+        print("| %s | %s | %s | %s |" % (name, cell(reparam), cell(stock),
+                                         cell(cgal)))
 
 
 if __name__ == "__main__":

@@ -2,6 +2,8 @@
 // views they create
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <numeric>
 #include <gtest/gtest.h>
 #include "GFace.h"
@@ -59,6 +61,54 @@ namespace {
         it != GModel::current()->lastFace(); ++it)
       if(!(*it)->stl_triangles.empty()) return *it;
     return nullptr;
+  }
+
+  // Plugin(SurfaceMeshQuality)'s line against a reference: Hausdorff and
+  // mean distance in %, elements against it (false if not logged)
+  bool referenceLine(const std::vector<std::string> &log, double &hausdorff,
+                     double &mean, unsigned long &against)
+  {
+    for(const std::string &line : log) {
+      std::size_t at = line.find("): Hausdorff ");
+      if(line.find("SurfaceMeshQuality: against") == std::string::npos ||
+         at == std::string::npos)
+        continue;
+      return std::sscanf(line.c_str() + at,
+                         "): Hausdorff %lf%% (mean %lf%%) of its diagonal, "
+                         "%lu elements",
+                         &hausdorff, &mean, &against) == 3;
+    }
+    return false;
+  }
+
+  std::vector<std::string> pluginLog(const std::string &reference)
+  {
+    gmsh::plugin::setString("SurfaceMeshQuality", "Reference", reference);
+    gmsh::plugin::setNumber("SurfaceMeshQuality", "CreateViews", 0);
+    gmsh::logger::start();
+    gmsh::plugin::run("SurfaceMeshQuality");
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    gmsh::logger::stop();
+    gmsh::plugin::setString("SurfaceMeshQuality", "Reference", "");
+    gmsh::plugin::setNumber("SurfaceMeshQuality", "CreateViews", 1);
+    return log;
+  }
+
+  // A stock mesh of the unit square moved by (dx, 0, dz)
+  void meshedSquare(double dx, double dz)
+  {
+    gmsh::clear();
+    int p[4];
+    for(int i = 0; i < 4; i++)
+      p[i] =
+        gmsh::model::geo::addPoint(dx + (i == 1 || i == 2), (i >= 2), dz, 0.1);
+    std::vector<int> lines;
+    for(int i = 0; i < 4; i++)
+      lines.push_back(gmsh::model::geo::addLine(p[i], p[(i + 1) % 4]));
+    gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop(lines)});
+    gmsh::model::geo::synchronize();
+    gmsh::model::mesh::generate(2);
   }
 
 } // namespace
@@ -197,6 +247,56 @@ TEST(surfaceMeshQualityPlugin, etaOfAStockQuadMesh)
     EXPECT_NEAR(eta->SQ[i * 16 + 12], 0.5, 1e-10) << i;
   clearViews();
   gmsh::model::remove();
+}
+
+TEST(surfaceMeshQualityPlugin, distancesToAReferenceFile)
+{
+  // The reference: the unit square at z = 0 in two facets (diagonal of its
+  // box sqrt 2)
+  const std::string file =
+    std::string(::testing::TempDir()) + "reparam_reference_square.stl";
+  {
+    std::ofstream stl(file);
+    stl << "solid square\n"
+        << "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+        << "vertex 1 1 0\nendloop\nendfacet\n"
+        << "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\n"
+        << "vertex 0 1 0\nendloop\nendfacet\nendsolid square\n";
+  }
+  double hausdorff = -1., mean = -1.;
+  unsigned long against = 99;
+  // a stock mesh of the square 0.01 above it: every sample 0.01 away
+  meshedSquare(0., 0.01);
+  std::vector<std::string> log = pluginLog(file);
+  ASSERT_TRUE(referenceLine(log, hausdorff, mean, against));
+  EXPECT_NEAR(hausdorff, 100. * 0.01 / std::sqrt(2.), 1e-3);
+  EXPECT_NEAR(mean, 100. * 0.01 / std::sqrt(2.), 1e-3);
+  EXPECT_EQ(against, 0u);
+  // moved by half its side: its far half 0.5 from the reference, and the
+  // reference's near half 0.5 from it
+  meshedSquare(0.5, 0.);
+  log = pluginLog(file);
+  ASSERT_TRUE(referenceLine(log, hausdorff, mean, against));
+  // (logged to 4 digits)
+  EXPECT_NEAR(hausdorff, 100. * 0.5 / std::sqrt(2.), 1e-2);
+  EXPECT_GT(mean, 5.);
+  EXPECT_LT(mean, 100. * 0.5 / std::sqrt(2.));
+  // the current model is left as it was: its one surface, meshed
+  std::vector<std::pair<int, int> > surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  EXPECT_EQ(surfaces.size(), 1u);
+  std::vector<std::size_t> tags, nodes;
+  gmsh::model::mesh::getElementsByType(2, tags, nodes);
+  EXPECT_GT(tags.size(), 100u);
+  // a missing file: a warning, no line
+  log = pluginLog(file + ".missing");
+  EXPECT_FALSE(referenceLine(log, hausdorff, mean, against));
+  bool warned = false;
+  for(const std::string &line : log)
+    warned |= line.find("no surface mesh in reference") != std::string::npos;
+  EXPECT_TRUE(warned);
+  std::remove(file.c_str());
+  gmsh::clear();
 }
 
 TEST(parametrizationPlugin, uvOnTheSurfaceAndFlattened)
