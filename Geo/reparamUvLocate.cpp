@@ -2,8 +2,51 @@
 
 #include <algorithm>
 #include <map>
+#include "MElementOctree.h"
 #include "MTriangle.h"
+#include "reparamOptions.h"
 #include "reparamUvLocate.h"
+#include "uvTriangleTree.h"
+
+class reparamUvLocator {
+public:
+  explicit reparamUvLocator(const std::vector<std::array<double, 6> > &c)
+    : tree(c)
+  {
+  }
+  uvTriangleTree tree;
+};
+
+reparamUvLocator *reparamNewUvLocator(const std::vector<MTriangle> &t2d)
+{
+  if(getReparamOptions().parametrization <= 0 || t2d.empty()) return nullptr;
+  std::vector<std::array<double, 6> > corners(t2d.size());
+  for(std::size_t i = 0; i < t2d.size(); i++)
+    for(int k = 0; k < 3; k++) {
+      // the (u, v) of a parametrized node are its x and y
+      corners[i][2 * k] = t2d[i].getVertex(k)->x();
+      corners[i][2 * k + 1] = t2d[i].getVertex(k)->y();
+    }
+  return new reparamUvLocator(corners);
+}
+
+void reparamDeleteUvLocator(reparamUvLocator *locator) { delete locator; }
+
+MElement *reparamFindUvTriangle(const reparamUvLocator *locator,
+                                const MElementOctree *octree,
+                                const std::vector<MTriangle> &t2d, double u,
+                                double v)
+{
+  if(!locator) return octree ? octree->find(u, v, 0.0, -1, true) : nullptr;
+  // the triangle found last, per thread (faces are meshed in parallel),
+  // tried first: a mesher's next query is often in it
+  thread_local const reparamUvLocator *lastLocator = nullptr;
+  thread_local int last = -1;
+  const int t = locator->tree.find(u, v, lastLocator == locator ? last : -1);
+  lastLocator = locator;
+  last = t;
+  return t < 0 ? nullptr : const_cast<MTriangle *>(&t2d[t]);
+}
 
 namespace {
 

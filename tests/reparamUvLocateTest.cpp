@@ -1,16 +1,20 @@
 // Reparam - points just outside a discrete face's (u, v) image are taken on
-// the closest triangle (the uv locate hook, patches/0007)
+// the closest triangle (the uv locate hook, patches/0007); points inside
+// found by a tree of the triangles' boxes (patches/0021)
 
+#include <cmath>
 #include <vector>
 #include <gtest/gtest.h>
+#include "MElementOctree.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "reparamUvLocate.h"
 
 TEST(reparamUvLocate, pointOutsideGoesToTheClosestBoundaryPoint)
 {
-  // An L-shaped image: the squares [0,1]x[0,1], [1,2]x[0,1] and [0,1]x[1,2], two triangles each;
-  // a chord from (2, 1) to (1, 2) leaves the image at its reflex corner
+  // An L-shaped image: the squares [0,1]x[0,1], [1,2]x[0,1] and [0,1]x[1,2],
+  // two triangles each; a chord from (2, 1) to (1, 2) leaves the image at its
+  // reflex corner
   std::vector<MVertex> v;
   v.reserve(8);
   const double xy[8][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 1},
@@ -37,4 +41,42 @@ TEST(reparamUvLocate, pointOutsideGoesToTheClosestBoundaryPoint)
   // nothing to find in nothing
   std::vector<MTriangle> none;
   EXPECT_EQ(reparamClosestUvTriangle(none, u, w), nullptr);
+}
+
+TEST(reparamUvLocate, theTreeFindsWhatGmshsOctreeFinds)
+{
+  // A fan of 12 triangles around (0.3, 0.2), its rim on a wobbly circle
+  std::vector<MVertex> v;
+  v.reserve(13);
+  v.emplace_back(0.3, 0.2, 0.);
+  for(int k = 0; k < 12; k++) {
+    const double a = 2. * M_PI * k / 12., r = 1. + 0.3 * (k % 3 == 0);
+    v.emplace_back(0.3 + r * std::cos(a), 0.2 + r * std::sin(a), 0.);
+  }
+  std::vector<MTriangle> t;
+  for(int k = 0; k < 12; k++)
+    t.emplace_back(&v[0], &v[1 + k], &v[1 + (k + 1) % 12]);
+  std::vector<MElement *> elements;
+  for(MTriangle &e : t) elements.push_back(&e);
+  MElementOctree octree(elements);
+  reparamUvLocator *locator = reparamNewUvLocator(t); // the automatic map
+  ASSERT_NE(locator, nullptr);
+  for(int i = -15; i <= 15; i++)
+    for(int j = -15; j <= 15; j++) {
+      const double u = 0.3 + 0.1 * i, w = 0.2 + 0.1 * j;
+      MElement *gmsh = octree.find(u, w, 0., -1, true);
+      MElement *tree = reparamFindUvTriangle(locator, &octree, t, u, w);
+      // the same triangle, or both inside within Gmsh's tolerance (a point
+      // on a shared edge)
+      ASSERT_EQ(gmsh == nullptr, tree == nullptr) << u << " " << w;
+      if(gmsh != tree) {
+        double xyz[3] = {u, w, 0.}, uvw[3];
+        tree->xyz2uvw(xyz, uvw);
+        EXPECT_TRUE(tree->isInside(uvw[0], uvw[1], uvw[2]));
+      }
+    }
+  // without a locator (Gmsh's own map): the octree's answer
+  EXPECT_EQ(reparamFindUvTriangle(nullptr, &octree, t, 0.35, 0.25),
+            octree.find(0.35, 0.25, 0., -1, true));
+  reparamDeleteUvLocator(locator);
 }
