@@ -115,75 +115,39 @@ closestTriangleSearch::closestTriangleSearch(
   : _points(points), _triangles(triangles)
 {
   if(_triangles.empty()) return;
-  _order.resize(_triangles.size());
-  for(std::size_t t = 0; t < _order.size(); t++) _order[t] = (int)t;
-  std::vector<SPoint3> centroids(_triangles.size());
-  for(std::size_t t = 0; t < _triangles.size(); t++)
-    centroids[t] = (_points[_triangles[t][0]] + _points[_triangles[t][1]] +
-                    _points[_triangles[t][2]]) *
-                   (1. / 3.);
-  _nodes.reserve(2 * _triangles.size() / leafSize + 2);
-  build(0, (int)_order.size(), centroids);
-  _triangleBoxes.resize(6 * _order.size());
-  for(std::size_t i = 0; i < _order.size(); i++) {
+  auto corner = [&](int t, int c) -> const SPoint3 & {
+    return _points[_triangles[t][c]];
+  };
+  _tree.build(
+    (int)_triangles.size(), leafSize,
+    [&](int t, double *lo, double *hi) {
+      for(int k = 0; k < 3; k++) {
+        lo[k] = std::min({corner(t, 0)[k], corner(t, 1)[k], corner(t, 2)[k]});
+        hi[k] = std::max({corner(t, 0)[k], corner(t, 1)[k], corner(t, 2)[k]});
+      }
+    },
+    [&](int t, int k) {
+      return (corner(t, 0)[k] + corner(t, 1)[k] + corner(t, 2)[k]) / 3.;
+    });
+  const std::vector<int> &order = _tree.order;
+  _triangleBoxes.resize(6 * order.size());
+  for(std::size_t i = 0; i < order.size(); i++) {
     double *box = &_triangleBoxes[6 * i];
-    const std::array<int, 3> &t = _triangles[_order[i]];
     for(int k = 0; k < 3; k++) {
-      box[k] = std::min({_points[t[0]][k], _points[t[1]][k], _points[t[2]][k]});
-      box[3 + k] =
-        std::max({_points[t[0]][k], _points[t[1]][k], _points[t[2]][k]});
+      box[k] = std::min({corner(order[i], 0)[k], corner(order[i], 1)[k],
+                         corner(order[i], 2)[k]});
+      box[3 + k] = std::max({corner(order[i], 0)[k], corner(order[i], 1)[k],
+                             corner(order[i], 2)[k]});
     }
   }
 }
 
 closestTriangleSearch::~closestTriangleSearch() {}
 
-// The node over _order[first, first + count): its box, then halves split at
-// the median centroid along the longest side of the centroids' box
-int closestTriangleSearch::build(int first, int count,
-                                 const std::vector<SPoint3> &centroids)
+std::size_t closestTriangleSearch::numBoxes() const
 {
-  const int index = (int)_nodes.size();
-  _nodes.push_back(boxNode());
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  double clo[3] = {1e300, 1e300, 1e300}, chi[3] = {-1e300, -1e300, -1e300};
-  for(int i = first; i < first + count; i++) {
-    const int t = _order[i];
-    for(int v : _triangles[t])
-      for(int k = 0; k < 3; k++) {
-        lo[k] = std::min(lo[k], _points[v][k]);
-        hi[k] = std::max(hi[k], _points[v][k]);
-      }
-    for(int k = 0; k < 3; k++) {
-      clo[k] = std::min(clo[k], centroids[t][k]);
-      chi[k] = std::max(chi[k], centroids[t][k]);
-    }
-  }
-  for(int k = 0; k < 3; k++) {
-    _nodes[index].lo[k] = lo[k];
-    _nodes[index].hi[k] = hi[k];
-  }
-  if(count <= leafSize) {
-    _nodes[index].first = first;
-    _nodes[index].count = count;
-    return index;
-  }
-  int axis = 0;
-  for(int k = 1; k < 3; k++)
-    if(chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
-  const int half = count / 2;
-  std::nth_element(_order.begin() + first, _order.begin() + first + half,
-                   _order.begin() + first + count, [&](int a, int b) {
-                     return centroids[a][axis] < centroids[b][axis];
-                   });
-  const int left = build(first, half, centroids);
-  const int right = build(first + half, count - half, centroids);
-  _nodes[index].left = left;
-  _nodes[index].right = right;
-  return index;
+  return _tree.nodes.size();
 }
-
-std::size_t closestTriangleSearch::numBoxes() const { return _nodes.size(); }
 
 double closestTriangleSearch::distanceTo(int t, const SPoint3 &p,
                                          SPoint3 &closest) const
@@ -203,7 +167,7 @@ closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p,
                                                   int near) const
 {
   closestTriangleHit hit;
-  if(_nodes.empty()) return hit;
+  if(_tree.nodes.empty()) return hit;
   double best2 = 1e300;
   if(near >= 0 && near < (int)_triangles.size()) {
     hit.triangle = near;
@@ -220,24 +184,25 @@ closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p,
   while(size) {
     const std::pair<double, int> top = stack[--size];
     if(top.first >= best2) continue;
-    const boxNode &n = _nodes[top.second];
+    const boxTree<3>::node &n = _tree.nodes[top.second];
     if(n.count) {
       for(int i = n.first; i < n.first + n.count; i++) {
         const double *box = &_triangleBoxes[6 * i];
         if(boxDistance2(box, box + 3, p) >= best2) continue;
         SPoint3 point;
-        const double d = distanceTo(_order[i], p, point);
+        const double d = distanceTo(_tree.order[i], p, point);
         if(d * d < best2) {
           best2 = d * d;
-          hit.triangle = _order[i];
+          hit.triangle = _tree.order[i];
           hit.distance = d;
           hit.point = point;
         }
       }
       continue;
     }
-    const double dl = boxDistance2(_nodes[n.left].lo, _nodes[n.left].hi, p);
-    const double dr = boxDistance2(_nodes[n.right].lo, _nodes[n.right].hi, p);
+    const boxTree<3>::node &l = _tree.nodes[n.left], &r = _tree.nodes[n.right];
+    const double dl = boxDistance2(l.lo, l.hi, p);
+    const double dr = boxDistance2(r.lo, r.hi, p);
     if(dl < dr) {
       stack[size++] = std::make_pair(dr, n.right);
       stack[size++] = std::make_pair(dl, n.left);

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 #include "SPoint3.h"
+#include "boxTree.h"
 
 // Closest point of segment [a, b] to p (a if the segment is a point)
 SPoint3 closestPointOnSegment(const SPoint3 &p, const SPoint3 &a,
@@ -60,19 +61,12 @@ public:
   std::size_t numBoxes() const;
 
 private:
-  struct boxNode {
-    double lo[3], hi[3];
-    int left = -1, right = -1; // children (inner nodes)
-    int first = 0, count = 0; // triangles _order[first, first + count)
-  };
   std::vector<SPoint3> _points;
   std::vector<std::array<int, 3> > _triangles;
-  std::vector<boxNode> _nodes;
-  std::vector<int> _order;
-  // the box of triangle _order[i] at 6 i (low corner, then high): a leaf's
-  // triangles farther than the best distance are skipped by it
+  boxTree<3> _tree; // over the triangles
+  // the box of triangle _tree.order[i] at 6 i (low corner, then high): a
+  // leaf's triangles farther than the best distance are skipped by it
   std::vector<double> _triangleBoxes;
-  int build(int first, int count, const std::vector<SPoint3> &centroids);
   double distanceTo(int t, const SPoint3 &p, SPoint3 &closest) const;
 };
 

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <vector>
+#include "boxTree.h"
 
 // A tree of boxes over the triangles (halved at the median centroid along
 // their longer side, four triangles a leaf), searched for the boxes that
@@ -29,18 +30,11 @@ public:
       return hint;
     return find(u, v, tolerance);
   }
-  std::size_t numBoxes() const { return _nodes.size(); }
+  std::size_t numBoxes() const { return _tree.nodes.size(); }
 
 private:
-  struct boxNode {
-    double lo[2], hi[2];
-    int left = -1, right = -1; // children (inner nodes)
-    int first = 0, count = 0; // triangles _order[first, first + count)
-  };
   std::vector<std::array<double, 6> > _corners;
-  std::vector<boxNode> _nodes;
-  std::vector<int> _order;
-  int build(int first, int count);
+  boxTree<2> _tree; // over the triangles
   bool holds(int t, double u, double v, double tolerance) const;
 };
 
