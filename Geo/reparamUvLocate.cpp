@@ -1,12 +1,41 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include <cstring>
 #include <map>
+#include <mutex>
+#include <unordered_map>
 #include "MElementOctree.h"
 #include "MTriangle.h"
+#include "SPoint2.h"
+#include "SPoint3.h"
 #include "reparamOptions.h"
 #include "reparamUvLocate.h"
 #include "uvTriangleTree.h"
+
+namespace {
+
+  // A point's coordinates, bit for bit
+  struct pointKey {
+    double x[3];
+    bool operator==(const pointKey &o) const
+    {
+      return std::memcmp(x, o.x, sizeof(x)) == 0;
+    }
+  };
+  struct pointKeyHash {
+    std::size_t operator()(const pointKey &k) const
+    {
+      std::size_t h = 0;
+      for(double c : k.x) h = h * 1000003u ^ std::hash<double>()(c);
+      return h;
+    }
+  };
+
+  // the (u, v) of points asked again and again: the curves' nodes
+  const std::size_t maxCachedPoints = 1000000;
+
+} // namespace
 
 class reparamUvLocator {
 public:
@@ -15,6 +44,10 @@ public:
   {
   }
   uvTriangleTree tree;
+  // parFromPoint's answers; a face may be asked from several threads
+  // (the optimization, the report) once it is meshed
+  std::mutex guard;
+  std::unordered_map<pointKey, SPoint2, pointKeyHash> uvOf;
 };
 
 reparamUvLocator *reparamNewUvLocator(const std::vector<MTriangle> &t2d)
@@ -126,4 +159,27 @@ MTriangle *reparamClosestUvTriangle(const std::vector<MTriangle> &t2d,
   u = bu;
   v = bv;
   return const_cast<MTriangle *>(&t2d[bestTriangle]);
+}
+
+bool reparamCachedUv(const reparamUvLocator *locator, const SPoint3 &p,
+                     SPoint2 &uv)
+{
+  if(!locator) return false;
+  reparamUvLocator *l = const_cast<reparamUvLocator *>(locator);
+  const pointKey key{{p.x(), p.y(), p.z()}};
+  std::lock_guard<std::mutex> lock(l->guard);
+  auto it = l->uvOf.find(key);
+  if(it == l->uvOf.end()) return false;
+  uv = it->second;
+  return true;
+}
+
+void reparamCacheUv(const reparamUvLocator *locator, const SPoint3 &p,
+                    const SPoint2 &uv)
+{
+  if(!locator) return;
+  reparamUvLocator *l = const_cast<reparamUvLocator *>(locator);
+  std::lock_guard<std::mutex> lock(l->guard);
+  if(l->uvOf.size() < maxCachedPoints)
+    l->uvOf.emplace(pointKey{{p.x(), p.y(), p.z()}}, uv);
 }

@@ -44,4 +44,15 @@ MElement *reparamFindUvTriangle(const reparamUvLocator *locator,
 MTriangle *reparamClosestUvTriangle(const std::vector<MTriangle> &t2d,
                                     double &u, double &v);
 
+// The (u, v) discreteFace::parFromPoint found for the point p before (its
+// closest point on the face, which does not change: the mesher asks it
+// again for every curve node next to a node it smooths), false if none or
+// without a locator; and that result kept
+class SPoint2;
+class SPoint3;
+bool reparamCachedUv(const reparamUvLocator *locator, const SPoint3 &p,
+                     SPoint2 &uv);
+void reparamCacheUv(const reparamUvLocator *locator, const SPoint3 &p,
+                    const SPoint2 &uv);
+
 #endif

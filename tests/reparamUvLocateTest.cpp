@@ -8,6 +8,8 @@
 #include "MElementOctree.h"
 #include "MTriangle.h"
 #include "MVertex.h"
+#include "SPoint2.h"
+#include "SPoint3.h"
 #include "reparamUvLocate.h"
 
 TEST(reparamUvLocate, pointOutsideGoesToTheClosestBoundaryPoint)
@@ -78,5 +80,30 @@ TEST(reparamUvLocate, theTreeFindsWhatGmshsOctreeFinds)
   // without a locator (Gmsh's own map): the octree's answer
   EXPECT_EQ(reparamFindUvTriangle(nullptr, &octree, t, 0.35, 0.25),
             octree.find(0.35, 0.25, 0., -1, true));
+  reparamDeleteUvLocator(locator);
+}
+
+TEST(reparamUvLocate, parFromPointAnswersKeptPerPoint)
+{
+  std::vector<MVertex> v;
+  v.reserve(3);
+  v.emplace_back(0., 0., 0.);
+  v.emplace_back(1., 0., 0.);
+  v.emplace_back(0., 1., 0.);
+  std::vector<MTriangle> t = {MTriangle(&v[0], &v[1], &v[2])};
+  reparamUvLocator *locator = reparamNewUvLocator(t);
+  ASSERT_NE(locator, nullptr);
+  SPoint2 uv(-1., -1.);
+  const SPoint3 p(0.25, 0.5, 0.125), q(0.25, 0.5, 0.1250000001);
+  EXPECT_FALSE(reparamCachedUv(locator, p, uv));
+  reparamCacheUv(locator, p, SPoint2(0.3, 0.4));
+  ASSERT_TRUE(reparamCachedUv(locator, p, uv));
+  EXPECT_EQ(uv.x(), 0.3);
+  EXPECT_EQ(uv.y(), 0.4);
+  // another point, however close, is not that one
+  EXPECT_FALSE(reparamCachedUv(locator, q, uv));
+  // without a locator (Gmsh's own map) nothing is kept
+  reparamCacheUv(nullptr, p, SPoint2(0.3, 0.4));
+  EXPECT_FALSE(reparamCachedUv(nullptr, p, uv));
   reparamDeleteUvLocator(locator);
 }
