@@ -21,4 +21,15 @@ enum class compoundWidget {
 // Shows value in the widget, if Gmsh's window exists
 void showInOptionsWindow(compoundWidget widget, double value);
 
+// The hooks (patches/0017), with the GUI only. The Compound tab, in the
+// group of the mesh options' tabs being built, at (x, y), w x h, its
+// check buttons bw wide; `changed`: the callback of Gmsh's mesh options,
+// which calls reparamApplyCompoundTab
+class optionWindow;
+class Fl_Widget;
+void reparamAddCompoundTab(optionWindow *o, int x, int y, int w, int h, int bw,
+                           void (*changed)(Fl_Widget *, void *));
+// The options set from the tab's widgets
+void reparamApplyCompoundTab(optionWindow *o);
+
 #endif

@@ -161,25 +161,20 @@ MTriangle *reparamClosestUvTriangle(const std::vector<MTriangle> &t2d,
   return const_cast<MTriangle *>(&t2d[bestTriangle]);
 }
 
-bool reparamCachedUv(const reparamUvLocator *locator, const SPoint3 &p,
-                     SPoint2 &uv)
+SPoint2
+reparamParFromPoint(const reparamUvLocator *locator, const SPoint3 &p,
+                    const std::function<SPoint2(const SPoint3 &)> &search)
 {
-  if(!locator) return false;
+  if(!locator) return search(p);
   reparamUvLocator *l = const_cast<reparamUvLocator *>(locator);
   const pointKey key{{p.x(), p.y(), p.z()}};
+  {
+    std::lock_guard<std::mutex> lock(l->guard);
+    auto it = l->uvOf.find(key);
+    if(it != l->uvOf.end()) return it->second;
+  }
+  const SPoint2 uv = search(p);
   std::lock_guard<std::mutex> lock(l->guard);
-  auto it = l->uvOf.find(key);
-  if(it == l->uvOf.end()) return false;
-  uv = it->second;
-  return true;
-}
-
-void reparamCacheUv(const reparamUvLocator *locator, const SPoint3 &p,
-                    const SPoint2 &uv)
-{
-  if(!locator) return;
-  reparamUvLocator *l = const_cast<reparamUvLocator *>(locator);
-  std::lock_guard<std::mutex> lock(l->guard);
-  if(l->uvOf.size() < maxCachedPoints)
-    l->uvOf.emplace(pointKey{{p.x(), p.y(), p.z()}}, uv);
+  if(l->uvOf.size() < maxCachedPoints) l->uvOf.emplace(key, uv);
+  return uv;
 }

@@ -18,6 +18,7 @@
 #ifndef REPARAM_UV_LOCATE_H
 #define REPARAM_UV_LOCATE_H
 
+#include <functional>
 #include <vector>
 
 class MElement;
@@ -44,15 +45,14 @@ MElement *reparamFindUvTriangle(const reparamUvLocator *locator,
 MTriangle *reparamClosestUvTriangle(const std::vector<MTriangle> &t2d,
                                     double &u, double &v);
 
-// The (u, v) discreteFace::parFromPoint found for the point p before (its
-// closest point on the face, which does not change: the mesher asks it
-// again for every curve node next to a node it smooths), false if none or
-// without a locator; and that result kept
+// discreteFace::parFromPoint's answer for p: search(p) (its closest point
+// on the face), kept per point by the locator, as it does not change and
+// the mesher asks it again for every curve node next to a node it smooths;
+// search(p) every time without a locator (Gmsh's own map)
 class SPoint2;
 class SPoint3;
-bool reparamCachedUv(const reparamUvLocator *locator, const SPoint3 &p,
-                     SPoint2 &uv);
-void reparamCacheUv(const reparamUvLocator *locator, const SPoint3 &p,
-                    const SPoint2 &uv);
+SPoint2
+reparamParFromPoint(const reparamUvLocator *locator, const SPoint3 &p,
+                    const std::function<SPoint2(const SPoint3 &)> &search);
 
 #endif

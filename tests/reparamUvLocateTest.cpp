@@ -93,17 +93,28 @@ TEST(reparamUvLocate, parFromPointAnswersKeptPerPoint)
   std::vector<MTriangle> t = {MTriangle(&v[0], &v[1], &v[2])};
   reparamUvLocator *locator = reparamNewUvLocator(t);
   ASSERT_NE(locator, nullptr);
-  SPoint2 uv(-1., -1.);
+  // a search that counts its calls and answers (x + z, y)
+  int searches = 0;
+  auto search = [&](const SPoint3 &q) {
+    searches++;
+    return SPoint2(q.x() + q.z(), q.y());
+  };
   const SPoint3 p(0.25, 0.5, 0.125), q(0.25, 0.5, 0.1250000001);
-  EXPECT_FALSE(reparamCachedUv(locator, p, uv));
-  reparamCacheUv(locator, p, SPoint2(0.3, 0.4));
-  ASSERT_TRUE(reparamCachedUv(locator, p, uv));
-  EXPECT_EQ(uv.x(), 0.3);
-  EXPECT_EQ(uv.y(), 0.4);
-  // another point, however close, is not that one
-  EXPECT_FALSE(reparamCachedUv(locator, q, uv));
-  // without a locator (Gmsh's own map) nothing is kept
-  reparamCacheUv(nullptr, p, SPoint2(0.3, 0.4));
-  EXPECT_FALSE(reparamCachedUv(nullptr, p, uv));
+  SPoint2 uv = reparamParFromPoint(locator, p, search);
+  EXPECT_EQ(searches, 1);
+  EXPECT_EQ(uv.x(), 0.375);
+  EXPECT_EQ(uv.y(), 0.5);
+  // asked again: the answer kept, no search
+  uv = reparamParFromPoint(locator, p, search);
+  EXPECT_EQ(searches, 1);
+  EXPECT_EQ(uv.x(), 0.375);
+  // another point, however close, is searched
+  uv = reparamParFromPoint(locator, q, search);
+  EXPECT_EQ(searches, 2);
+  EXPECT_NEAR(uv.x(), 0.3750000001, 1e-15);
+  // without a locator (Gmsh's own map): searched every time
+  reparamParFromPoint(nullptr, p, search);
+  reparamParFromPoint(nullptr, p, search);
+  EXPECT_EQ(searches, 4);
   reparamDeleteUvLocator(locator);
 }
