@@ -46,8 +46,8 @@ public:
   uvTriangleTree tree;
   // parFromPoint's answers; a face may be asked from several threads
   // (the optimization, the report) once it is meshed
-  std::mutex guard;
-  std::unordered_map<pointKey, SPoint2, pointKeyHash> uvOf;
+  mutable std::mutex guard;
+  mutable std::unordered_map<pointKey, SPoint2, pointKeyHash> uvOf;
 };
 
 reparamUvLocator *reparamNewUvLocator(const std::vector<MTriangle> &t2d)
@@ -166,7 +166,7 @@ reparamParFromPoint(const reparamUvLocator *locator, const SPoint3 &p,
                     const std::function<SPoint2(const SPoint3 &)> &search)
 {
   if(!locator) return search(p);
-  reparamUvLocator *l = const_cast<reparamUvLocator *>(locator);
+  const reparamUvLocator *l = locator;
   const pointKey key{{p.x(), p.y(), p.z()}};
   {
     std::lock_guard<std::mutex> lock(l->guard);
