@@ -231,7 +231,8 @@ void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes)
   };
   std::vector<int> corners;
   const std::vector<double> snapped = snapCurveNodesToCorners(
-    polyline, params, allowed, &corners, evenForBlossom(ge));
+    polyline, params, allowed, &corners, evenForBlossom(ge),
+    reparamCurveAlongNarrowStrip(ge));
   for(int i : corners)
     takenCorners()[byCoordinates(polyline[i])] = {ge->model(), ge->tag(), ge};
   if(snapped == params) return;

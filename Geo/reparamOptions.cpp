@@ -145,6 +145,14 @@ double opt_mesh_compound_mesh_size_gradient(OPT_ARGS_NUM)
                            "CompoundMeshSizeGradient", action, val);
 }
 
+double opt_mesh_compound_mesh_size_from_strips(OPT_ARGS_NUM)
+{
+  double v = getReparamOptions().meshSizeFromStrips;
+  nonNegativeOption(v, "CompoundMeshSizeFromStrips", action, val);
+  getReparamOptions().meshSizeFromStrips = v > 0.;
+  return getReparamOptions().meshSizeFromStrips;
+}
+
 double opt_mesh_compound_report(OPT_ARGS_NUM)
 {
   return onOffOption(getReparamOptions().report, compoundWidget::report, action,

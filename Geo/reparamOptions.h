@@ -48,6 +48,10 @@ struct reparamOptions {
   // distance into the face, and along discrete curves the size from the
   // ends of the short curves (Geo/reparamSizeGrading.cpp); 0: Gmsh's sizes
   double meshSizeGradient = 0.5;
+  // Mesh.CompoundMeshSizeFromStrips: with a gradient, the surfaces
+  // narrower than the size give their curves sizes of their width
+  // (Mesh/narrowStrips.h); off by default (README *Sizes from the curves*)
+  int meshSizeFromStrips = 0;
   // Mesh.CompoundCurvatureMetric: N > 0: anisotropic sizes 2 pi R / N along
   // the principal directions of the input's curvature (BAMG), the smaller
   // one for the isotropic meshers (Geo/reparamCurvatureMetric.h); 0: off

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include "BackgroundMeshTools.h"
 #include "GEdge.h"
 #include "Context.h"
@@ -14,7 +15,10 @@
 #include "MLine.h"
 #include "MVertex.h"
 #include "closestTriangle.h"
+#include "edgeByCoordinates.h"
 #include "gradedBoundarySize.h"
+#include "meshFidelity.h"
+#include "narrowStrips.h"
 #include "reparamCreaseCurves.h"
 #include "reparamCurveMesh.h"
 #include "reparamOptions.h"
@@ -81,6 +85,7 @@ namespace {
   struct curveGrading {
     GModel *model = nullptr;
     std::unique_ptr<gradedBoundarySize> size;
+    std::set<const GEdge *> alongStrips; // the curves of narrow faces
   };
   curveGrading curves;
 
@@ -138,6 +143,77 @@ namespace {
     }
   }
 
+  // Strips narrower than this share of the size get sizes of their width,
+  // but no finer than that share: a strip of a twentieth of the size along
+  // a long curve would get twenty times its nodes
+  const double finestStrip = 0.25;
+
+  // gf's input points laid out in its parametrization, when it has one
+  // (else in space): a bent strip is straight there
+  std::vector<SPoint3> flatInput(const GFace *gf, const surfaceMesh &input)
+  {
+    std::vector<SPoint3> flat = input.points;
+    if(gf->stl_vertices_uv.size() == flat.size())
+      for(std::size_t i = 0; i < flat.size(); i++)
+        flat[i] =
+          SPoint3(gf->stl_vertices_uv[i].x(), gf->stl_vertices_uv[i].y(), 0.);
+    return flat;
+  }
+
+  // The input edges of gf's curves that cut across smooth parts of the
+  // surface: the final optimization crosses them
+  // (Geo/reparamOptimizeAcrossCuts.h), they are no strip's sides
+  std::set<edgeByCoordinates> crossableEdges(GFace *gf)
+  {
+    std::set<edgeByCoordinates> cuts;
+    for(GEdge *ge : gf->edges()) {
+      std::vector<SPoint3> polyline;
+      if(!reparamIsCrossableCurve(ge) || !reparamInputPolyline(ge, polyline))
+        continue;
+      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+        cuts.insert(byCoordinates(polyline[i], polyline[i + 1]));
+    }
+    return cuts;
+  }
+
+  // The boundary points of the discrete faces narrower there than the size
+  // (Mesh/narrowStrips.h), with their width, as sources of the curves'
+  // sizes: a strip's curves then get nodes about its width apart and the
+  // faces' sizes grow from them
+  void narrowStrips(GModel *m, std::vector<SPoint3> &sources,
+                    std::vector<double> &sizes, std::set<const GEdge *> &along)
+  {
+    std::size_t points = 0, faces = 0;
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+      GFace *gf = *it;
+      const parametrizationRecord *map = findParametrization(gf);
+      if(gf->geomType() != GEntity::DiscreteSurface || !map || map->map <= 0)
+        continue;
+      const surfaceMesh input = inputTriangulationOf(gf);
+      const auto size = [gf](const SPoint3 &x) {
+        return BGM_MeshSize(gf, 0., 0., x.x(), x.y(), x.z());
+      };
+      const std::set<edgeByCoordinates> cuts = crossableEdges(gf);
+      const auto side = [&](int a, int b) {
+        return !cuts.count(byCoordinates(input.points[a], input.points[b]));
+      };
+      const std::vector<stripWidth> strips = narrowStripWidths(
+        input, flatInput(gf, input), size, nearlyTheSize, side);
+      for(const stripWidth &s : strips) {
+        sources.push_back(s.point);
+        sizes.push_back(std::max(s.width, finestStrip * size(s.point)));
+      }
+      points += strips.size();
+      faces += !strips.empty();
+      if(!strips.empty())
+        for(GEdge *ge : gf->edges()) along.insert(ge);
+    }
+    if(points)
+      Msg::Info("Reparam: %lu surface%s narrower than the size: their curves "
+                "get sizes of their width at %lu points",
+                faces, faces > 1 ? "s" : "", points);
+  }
+
   // A curve's mesh with more segments than this is refused: Gmsh would
   // spend hours and gigabytes on it (coordinates of 1e30 with the default
   // Mesh.MeshSizeMax of 1e22: 4e8 segments on a square's side)
@@ -152,7 +228,8 @@ namespace {
   // than mostSegments segments refused (an error each), and, with a
   // gradient, the ends of those shorter than the size asked along them,
   // with the length of their segments, as the sources of the curves' sizes
-  std::unique_ptr<gradedBoundarySize> measureCurves(GModel *m, double gradient)
+  std::unique_ptr<gradedBoundarySize>
+  measureCurves(GModel *m, double gradient, std::set<const GEdge *> &along)
   {
     const int segments = std::max(1, CTX::instance()->mesh.minCurveNodes - 1);
     std::vector<SPoint3> ends;
@@ -183,7 +260,11 @@ namespace {
         sizes.push_back(length / segments);
       }
     }
-    if(gradient > 0.) pointsNearCurves(m, ends, sizes);
+    if(gradient > 0.) {
+      pointsNearCurves(m, ends, sizes);
+      if(getReparamOptions().meshSizeFromStrips)
+        narrowStrips(m, ends, sizes, along);
+    }
     return std::unique_ptr<gradedBoundarySize>(
       new gradedBoundarySize(ends, sizes, gradient, reach));
   }
@@ -196,11 +277,12 @@ void reparamBeginCurveSizeGrading(GModel *m)
     return;
   reparamHideSmallCreaseCurves(m);
   const double gradient = getReparamOptions().meshSizeGradient;
-  std::unique_ptr<gradedBoundarySize> size = measureCurves(m, gradient);
+  std::set<const GEdge *> along;
+  std::unique_ptr<gradedBoundarySize> size = measureCurves(m, gradient, along);
   if(gradient <= 0. || !size->size()) return;
-  Msg::Debug("Reparam: curve sizes graded from the ends of %lu short curves",
-             size->size() / 2);
+  Msg::Debug("Reparam: curve sizes graded from %lu sources", size->size());
   curves.size = std::move(size);
+  curves.alongStrips.swap(along);
   curves.model = m;
 }
 
@@ -237,6 +319,11 @@ bool reparamCurveSizesGraded(const GEdge *ge)
 {
   return curves.model && ge->model() == curves.model &&
          ge->geomType() == GEntity::DiscreteCurve;
+}
+
+bool reparamCurveAlongNarrowStrip(const GEdge *ge)
+{
+  return reparamCurveSizesGraded(ge) && curves.alongStrips.count(ge);
 }
 
 double reparamGradedCurveSize(const GEdge *ge, const SPoint3 &x, double size)

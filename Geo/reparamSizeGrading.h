@@ -36,10 +36,17 @@ void reparamEndSizeGrading(GFace *gf);
 // until reparamRestoreRefusedSurfaces, called after Mesh2D.
 // With Reparam's maps, Begin first takes the crease curves too small for
 // the size out of their faces, and End deletes their 1D meshes
-// (Geo/reparamCreaseCurves.h): they are no sources of sizes.
+// (Geo/reparamCreaseCurves.h): they are no sources of sizes. The faces
+// narrower than the size (Mesh/narrowStrips.h) give their curves sizes of
+// their width, which the faces' sizes then grow from.
 void reparamBeginCurveSizeGrading(GModel *m);
 void reparamEndCurveSizeGrading(GModel *m);
 void reparamRestoreRefusedSurfaces(GModel *m);
+
+// While the curves are meshed: whether ge bounds a face narrower than the
+// size somewhere (Mesh/narrowStrips.h): its corners are the strip's, each
+// one a node (Mesh/curveCornerSnap.h)
+bool reparamCurveAlongNarrowStrip(const GEdge *ge);
 
 // While the curves are meshed: whether the sizes along ge are graded, and
 // the graded size at x where smaller than `size`, else `size` (the 1D

@@ -53,11 +53,12 @@ namespace {
     return std::acos(std::min(1., std::max(-1., dot(in, out) / l)));
   }
 
-  // The input node strictly between parameters t0 and t1 where the polyline
-  // turns most at the scale of half the segment, if it turns by cornerAngle
-  // or more; else -1
-  int sharpestCorner(const std::vector<SPoint3> &polyline, const arcLength &arc,
-                     double t0, double t1)
+  // The input nodes strictly between parameters t0 and t1 where the
+  // polyline turns at the scale of half the segment by cornerAngle or more,
+  // with their turns (negated)
+  void cornersWithin(const std::vector<SPoint3> &polyline, const arcLength &arc,
+                     double t0, double t1,
+                     std::vector<std::pair<double, int> > &corners)
   {
     // Below this a turn is the polyline following a smooth curve: moving
     // nodes onto it would only make the segments uneven (the dome's holes,
@@ -65,34 +66,37 @@ namespace {
     // 0.55 when snapped). 40 degrees: the feature angle of the STL recipe.
     const double cornerAngle = 40. * M_PI / 180.;
     const double w = 0.5 * (arc.of(t1) - arc.of(t0));
-    int corner = -1;
-    double sharpest = cornerAngle;
     for(int i = std::max(1, (int)std::floor(t0) + 1);
         i < t1 && i + 1 < (int)polyline.size(); i++) {
       if(i <= t0) continue;
       const double a = turningAngle(polyline, arc, i, w);
-      if(a >= sharpest) {
-        sharpest = a;
-        corner = i;
-      }
+      if(a >= cornerAngle) corners.push_back({-a, i});
     }
-    return corner;
   }
 
-  // The corners the nodes go to: the sharpest of each segment, sharpest
-  // first; one closer than half a segment to the curve's ends or to a
-  // sharper corner is left out (a node already sits about there)
+  // The corners the nodes go to: the sharpest of each segment (every one
+  // with everyCorner), sharpest first; one closer than half a segment to
+  // the curve's ends or to a sharper corner is left out (a node already
+  // sits about there)
   std::vector<int> chooseCorners(const std::vector<SPoint3> &polyline,
                                  const arcLength &arc,
                                  const std::vector<double> &params,
-                                 const std::function<bool(int)> &allowed)
+                                 const std::function<bool(int)> &allowed,
+                                 bool everyCorner)
   {
     std::vector<std::pair<double, int> > candidates; // (-turn, node)
     for(std::size_t s = 0; s + 1 < params.size(); s++) {
-      const int c = sharpestCorner(polyline, arc, params[s], params[s + 1]);
-      if(c < 0 || (allowed && !allowed(c))) continue;
-      const double w = 0.5 * (arc.of(params[s + 1]) - arc.of(params[s]));
-      candidates.push_back({-turningAngle(polyline, arc, c, w), c});
+      std::vector<std::pair<double, int> > corners;
+      cornersWithin(polyline, arc, params[s], params[s + 1], corners);
+      if(!everyCorner && corners.size() > 1) {
+        // the sharpest, the last of equal ones
+        std::pair<double, int> sharpest = corners.front();
+        for(const auto &c : corners)
+          if(c.first <= sharpest.first) sharpest = c;
+        corners = {sharpest};
+      }
+      for(const auto &c : corners)
+        if(!allowed || allowed(c.second)) candidates.push_back(c);
     }
     std::sort(candidates.begin(), candidates.end());
     const double segment =
@@ -150,17 +154,16 @@ namespace {
 
 } // namespace
 
-std::vector<double>
-snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
-                        const std::vector<double> &params,
-                        const std::function<bool(int)> &allowed,
-                        std::vector<int> *taken, bool keepParity)
+std::vector<double> snapCurveNodesToCorners(
+  const std::vector<SPoint3> &polyline, const std::vector<double> &params,
+  const std::function<bool(int)> &allowed, std::vector<int> *taken,
+  bool keepParity, bool everyCorner)
 {
   if(taken) taken->clear();
   if(polyline.size() < 3 || params.size() < 3) return params;
   const arcLength arc(polyline);
   const std::vector<int> corners =
-    chooseCorners(polyline, arc, params, allowed);
+    chooseCorners(polyline, arc, params, allowed, everyCorner);
   if(taken) *taken = corners;
   if(corners.empty()) return params;
   // the curve cut at its corners, each piece meshed evenly with its share

@@ -31,10 +31,18 @@
 // distance 0.27 -> 0.46 %). Without a corner, params
 // as they are. `allowed`, when given, says which input nodes may be taken
 // (not one another curve took: two nodes there would make a degenerate
-// triangle); `corners` gets the ones taken.
-std::vector<double> snapCurveNodesToCorners(
-  const std::vector<SPoint3> &polyline, const std::vector<double> &params,
-  const std::function<bool(int)> &allowed = nullptr,
-  std::vector<int> *corners = nullptr, bool keepParity = false);
+// triangle); `corners` gets the ones taken. everyCorner: not only the
+// sharpest of each segment, for a curve along a strip narrower than the
+// size, whose sharp turns are the strip's (the two corners of a slot's end
+// 0.8 segments apart: adis16480's segment across the end cut one off, and
+// the slot wall's triangle there turned over); elsewhere the sharpest
+// only (a scan's noisy classification curves: armadillo's kappa min 0.52
+// -> 0.38 with every corner)
+std::vector<double>
+snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
+                        const std::vector<double> &params,
+                        const std::function<bool(int)> &allowed = nullptr,
+                        std::vector<int> *corners = nullptr,
+                        bool keepParity = false, bool everyCorner = false);
 
 #endif

@@ -50,6 +50,31 @@ TEST(curveCornerSnap, cornerNearAnEndIsLeftOut)
   EXPECT_EQ(snapCurveNodesToCorners(p, params), params);
 }
 
+TEST(curveCornerSnap, bothCornersOfASlotsEndWithinOneSegment)
+{
+  // a slot's end: two right-angled corners 0.8 apart (0.82 segments), both
+  // within the segment from arc length 3.9 to 4.9; with everyCorner each
+  // becomes a node, the end one segment between them
+  const std::vector<SPoint3> p = {SPoint3(0, 0, 0), SPoint3(4, 0, 0),
+                                  SPoint3(4, 0.8, 0), SPoint3(0, 0.8, 0)};
+  const std::vector<double> params = {0.,    0.25, 0.5, 0.75, 0.975,
+                                      2.025, 2.25, 2.5, 2.75, 3.};
+  std::vector<int> corners;
+  snapCurveNodesToCorners(p, params, nullptr, &corners);
+  EXPECT_EQ(corners.size(), 1u); // the sharpest of the segment only
+  corners.clear();
+  const std::vector<double> snapped =
+    snapCurveNodesToCorners(p, params, nullptr, &corners, false, true);
+  EXPECT_EQ(corners, std::vector<int>({1, 2}));
+  ASSERT_EQ(snapped.size(), params.size());
+  int on = 0;
+  for(std::size_t i = 0; i + 1 < snapped.size(); i++) {
+    on += snapped[i] == 1. || snapped[i] == 2.;
+    if(snapped[i] == 1.) EXPECT_EQ(snapped[i + 1], 2.);
+  }
+  EXPECT_EQ(on, 2);
+}
+
 TEST(curveCornerSnap, zigZagAtTheInputScaleIsNoCorner)
 {
   // a straight line of input edges zig-zagging by +-0.3 across it (turning

@@ -3,7 +3,9 @@
 // over the whole face
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <string>
 #include <gtest/gtest.h>
 #include "BackgroundMeshTools.h"
@@ -306,4 +308,81 @@ TEST(reparamSizeGrading, aModelFarLargerThanTheSizeIsAnErrorNotAHang)
   gmsh::model::mesh::generate(2);
   gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
   EXPECT_GT(meshTriangles(), 6u * 20u);
+}
+
+namespace {
+
+  // A planar frame: the unit square less its middle, bars `bar` wide, on a
+  // grid of 0.05
+  testTriangulation frame(double bar)
+  {
+    const testTriangulation grid = rectangleGrid(20, 20, 1., 1.);
+    testTriangulation t;
+    std::map<int, int> index;
+    for(const auto &tri : grid.triangles) {
+      double x = 0., y = 0.;
+      for(int k : tri) {
+        x += grid.points[k].x() / 3.;
+        y += grid.points[k].y() / 3.;
+      }
+      if(x > bar && x < 1. - bar && y > bar && y < 1. - bar) continue;
+      std::array<int, 3> kept;
+      for(int k = 0; k < 3; k++) {
+        auto it = index.emplace(tri[k], (int)t.points.size()).first;
+        if(it->second == (int)t.points.size())
+          t.points.push_back(grid.points[tri[k]]);
+        kept[k] = it->second;
+      }
+      t.triangles.push_back(kept);
+    }
+    return t;
+  }
+
+  // The worst kappa and the count of the current model's triangles
+  std::pair<double, std::size_t> worstAndCount()
+  {
+    double worst = 1.;
+    std::size_t count = 0;
+    for(auto it = GModel::current()->firstFace();
+        it != GModel::current()->lastFace(); ++it)
+      for(MTriangle *t : (*it)->triangles) {
+        worst = std::min(worst, triangleKappa(t->getVertex(0)->point(),
+                                              t->getVertex(1)->point(),
+                                              t->getVertex(2)->point()));
+        count++;
+      }
+    return {worst, count};
+  }
+
+} // namespace
+
+TEST(reparamSizeGrading, aStripNarrowerThanTheSizeGetsSizesOfItsWidth)
+{
+  // bars 0.1 wide meshed at 0.3: one triangle across them either way, of
+  // the size along them, or of about their width with the strips' sizes
+  double off = -1.;
+  gmsh::option::getNumber("Mesh.CompoundMeshSizeFromStrips", off);
+  EXPECT_EQ(off, 0.); // the default
+  gmsh::option::setNumber("Mesh.CompoundMeshSizeFromStrips", 1);
+  const std::vector<std::string> log = remeshWithRecipe(frame(0.1), 0.3);
+  gmsh::option::setNumber("Mesh.CompoundMeshSizeFromStrips", 0);
+  const auto strips = worstAndCount();
+  EXPECT_TRUE(std::any_of(log.begin(), log.end(), [](const std::string &l) {
+    return l.find("narrower than the size: their curves get sizes of their "
+                  "width") != std::string::npos;
+  }));
+  const std::vector<std::string> plainLog = remeshWithRecipe(frame(0.1), 0.3);
+  const auto plain = worstAndCount();
+  EXPECT_FALSE(
+    std::any_of(plainLog.begin(), plainLog.end(), [](const std::string &l) {
+      return l.find("sizes of their width") != std::string::npos;
+    }));
+  printf("worst kappa %g -> %g, triangles %lu -> %lu\n", plain.first,
+         strips.first, plain.second, strips.second);
+  // measured: 0.52 (26 triangles) -> 0.82 (66)
+  EXPECT_GT(strips.first, 0.75);
+  EXPECT_LT(plain.first, 0.55);
+  // the bars' length (3.6) over their width, on both sides: about 72
+  EXPECT_GT(strips.second, 60u);
+  EXPECT_LT(strips.second, 90u);
 }
