@@ -8,6 +8,7 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "narrowStrips.h"
+#include "triangleAdjacency.h"
 
 namespace {
 
@@ -94,27 +95,18 @@ namespace {
   std::vector<boundaryEdge> boundaryEdgesOf(const surfaceMesh &m,
                                             const std::vector<SPoint3> &flat)
   {
-    struct use {
-      int triangles = 0, opposite = -1;
-    };
-    std::unordered_map<long long, use> uses;
-    const long long n = (long long)m.points.size();
-    for(const auto &t : m.triangles)
-      for(int k = 0; k < 3; k++) {
-        const int a = std::min(t[k], t[(k + 1) % 3]);
-        const int b = std::max(t[k], t[(k + 1) % 3]);
-        use &u = uses[a * n + b];
-        u.triangles++;
-        u.opposite = t[(k + 2) % 3];
-      }
+    const triangleAdjacency adjacency = makeTriangleAdjacency(m.triangles);
     std::vector<boundaryEdge> edges;
-    for(const auto &e : uses) {
-      if(e.second.triangles != 1) continue;
+    for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+      if(adjacency.numTriangles((int)e) != 1) continue;
       boundaryEdge be;
-      be.a = (int)(e.first / n);
-      be.b = (int)(e.first % n);
+      be.a = adjacency.edges[e][0];
+      be.b = adjacency.edges[e][1];
+      const std::array<int, 3> &t =
+        m.triangles[adjacency.edgeTriangles[adjacency.edgeStart[e]]];
+      const int opposite = t[0] + t[1] + t[2] - be.a - be.b;
       const SVector3 ab(flat[be.a], flat[be.b]);
-      const SVector3 ac(flat[be.a], flat[e.second.opposite]);
+      const SVector3 ac(flat[be.a], flat[opposite]);
       const double l2 = dot(ab, ab);
       if(l2 > 0.) {
         be.inward = ac - ab * (dot(ac, ab) / l2);
