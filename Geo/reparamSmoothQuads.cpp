@@ -17,6 +17,7 @@
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "quadDiagonalCollapse.h"
 #include "quadEdgeRotation.h"
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
@@ -103,11 +104,9 @@ namespace {
   }
 
   // Rotates the edges between quadrangles of one face towards valence 4
-  // (Mesh/quadEdgeRotation.h), before the node moves square them up;
-  // writes the new corners to the quadrangles
-  quadRotationResult makeRegular(const cutGroup &g, surfaceMesh &m,
+  // (Mesh/quadEdgeRotation.h), before the node moves square them up
+  quadRotationResult rotateEdges(const cutGroup &g, surfaceMesh &m,
                                  const std::vector<MVertex *> &nodes,
-                                 const std::vector<MQuadrangle *> &quads,
                                  const std::vector<int> &part,
                                  const surfaceMesh &input,
                                  const closestTriangleSearch &onInput)
@@ -115,9 +114,109 @@ namespace {
     quadRotationOptions o;
     o.input = &input;
     o.onInput = &onInput;
-    const quadRotationResult r =
-      rotateQuadEdges(m, part, curveSegmentsOf(g, nodes), o);
-    if(!r.rotations) return r;
+    return rotateQuadEdges(m, part, curveSegmentsOf(g, nodes), o);
+  }
+
+  // Per point, the index in g of the face it is an inner node of (-1: a
+  // curve's or another face's node)
+  std::vector<int> ownersOf(const cutGroup &g,
+                            const std::vector<MVertex *> &nodes)
+  {
+    std::map<GEntity *, int> face;
+    for(std::size_t f = 0; f < g.faces.size(); f++) face[g.faces[f]] = (int)f;
+    std::vector<int> owner;
+    for(MVertex *v : nodes) {
+      auto it = face.find(v->onWhat());
+      owner.push_back(it == face.end() ? -1 : it->second);
+    }
+    return owner;
+  }
+
+  // Collapses quadrangles along a diagonal where the mesh gets more
+  // regular (Mesh/quadDiagonalCollapse.h): the merged nodes move, the
+  // other node of each pair leaves its face (into `gone`, deleted by the
+  // caller) and the collapsed quadrangles are deleted, from the faces and
+  // from m, quads and part
+  quadCollapseResult collapseDiagonals(const cutGroup &g, surfaceMesh &m,
+                                       const std::vector<MVertex *> &nodes,
+                                       std::vector<MQuadrangle *> &quads,
+                                       std::vector<int> &part,
+                                       const closestTriangleSearch &onInput,
+                                       std::vector<MVertex *> &gone)
+  {
+    const std::vector<int> owner = ownersOf(g, nodes);
+    std::vector<int> mergedInto;
+    std::vector<bool> removed;
+    quadCollapseOptions o;
+    o.onInput = &onInput;
+    const quadCollapseResult r =
+      collapseQuadDiagonals(m, part, owner, mergedInto, removed, o);
+    if(!r.collapses) return r;
+    for(std::size_t i = 0; i < nodes.size(); i++) {
+      if(mergedInto[i] >= 0) {
+        std::vector<MVertex *> &own = g.faces[owner[i]]->mesh_vertices;
+        own.erase(std::remove(own.begin(), own.end(), nodes[i]), own.end());
+        gone.push_back(nodes[i]);
+      }
+    }
+    for(std::size_t i = 0; i < nodes.size(); i++) {
+      if(!std::count(mergedInto.begin(), mergedInto.end(), (int)i)) continue;
+      const SPoint3 &p = m.points[i];
+      const SPoint2 uv = g.faces[owner[i]]->parFromPoint(p);
+      nodes[i]->setXYZ(p.x(), p.y(), p.z());
+      nodes[i]->setParameter(0, uv.x());
+      nodes[i]->setParameter(1, uv.y());
+    }
+    std::set<MQuadrangle *> dropped;
+    std::vector<std::array<int, 4> > keptCorners;
+    std::vector<MQuadrangle *> keptQuads;
+    std::vector<int> keptPart;
+    for(std::size_t i = 0; i < quads.size(); i++) {
+      if(removed[i]) {
+        dropped.insert(quads[i]);
+        continue;
+      }
+      keptCorners.push_back(m.quadrangles[i]);
+      keptQuads.push_back(quads[i]);
+      keptPart.push_back(part[i]);
+    }
+    for(GFace *gf : g.faces) {
+      std::vector<MQuadrangle *> &own = gf->quadrangles;
+      own.erase(
+        std::remove_if(own.begin(), own.end(),
+                       [&](MQuadrangle *q) { return dropped.count(q) > 0; }),
+        own.end());
+    }
+    for(MQuadrangle *q : dropped) delete q;
+    m.quadrangles.swap(keptCorners);
+    quads.swap(keptQuads);
+    part.swap(keptPart);
+    return r;
+  }
+
+  // Edge rotations, then diagonal collapses and rotations again; writes the
+  // new corners to the quadrangles
+  quadRotationResult
+  makeRegular(const cutGroup &g, surfaceMesh &m,
+              const std::vector<MVertex *> &nodes,
+              std::vector<MQuadrangle *> &quads, std::vector<int> &part,
+              const surfaceMesh &input, const closestTriangleSearch &onInput,
+              quadCollapseResult &collapsed, std::vector<MVertex *> &gone)
+  {
+    quadRotationResult r = rotateEdges(g, m, nodes, part, input, onInput);
+    // a collapse can let an edge rotate, and a rotation bring two nodes of
+    // valence 3 across a quadrangle: a few rounds
+    for(int round = 0; round < 4; round++) {
+      const quadCollapseResult c =
+        collapseDiagonals(g, m, nodes, quads, part, onInput, gone);
+      collapsed.collapses += c.collapses;
+      if(!c.collapses) break;
+      const quadRotationResult again =
+        rotateEdges(g, m, nodes, part, input, onInput);
+      r.rotations += again.rotations;
+      r.irregularAfter = again.irregularAfter;
+    }
+    if(!r.rotations && !collapsed.collapses) return r;
     for(std::size_t i = 0; i < quads.size(); i++)
       for(int k = 0; k < 4; k++)
         quads[i]->setVertex(k, nodes[m.quadrangles[i][k]]);
@@ -282,8 +381,6 @@ namespace {
     surfaceMesh m = meshOfGroup(g, nodes, quads, part);
     double etaMinBefore, etaMeanBefore;
     etaOfQuadrangles(m, etaMinBefore, etaMeanBefore);
-    const quadRotationResult rotated =
-      makeRegular(g, m, nodes, quads, part, input, onInput);
     const std::set<GFace *> faces(g.faces.begin(), g.faces.end());
     const std::set<GEdge *> cuts(g.cuts.begin(), g.cuts.end());
     std::vector<bool> movable(nodes.size());
@@ -292,6 +389,13 @@ namespace {
       movable[i] = (e->dim() == 2 && faces.count((GFace *)e)) ||
                    (e->dim() == 1 && cuts.count((GEdge *)e));
     }
+    quadCollapseResult collapsed;
+    std::vector<MVertex *> gone;
+    const quadRotationResult rotated =
+      makeRegular(g, m, nodes, quads, part, input, onInput, collapsed, gone);
+    const std::set<MVertex *> goneSet(gone.begin(), gone.end());
+    for(std::size_t i = 0; i < nodes.size(); i++)
+      if(goneSet.count(nodes[i])) movable[i] = false;
     std::vector<std::unique_ptr<std::vector<SPoint3> > > polylines;
     std::vector<polylineSlide> slides = slidesOf(g, nodes, polylines);
     std::vector<double> slideFrom;
@@ -300,21 +404,23 @@ namespace {
     const quadSmoothingResult r =
       smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides);
     for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
-    if(!r.moves && !rotated.rotations) return false;
+    if(!r.moves && !rotated.rotations && !collapsed.collapses) return false;
     writeSlides(m, nodes, slides, slideFrom);
     const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
+    for(MVertex *v : gone) delete v;
     for(GFace *gf : g.faces) {
       gf->deleteVertexArrays();
       const faceReport *report = findFaceReport(gf);
       reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
     }
     Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
-              "(%lu edge rotations, inner nodes not of valence 4 %lu -> %lu; "
+              "(%lu edge rotations and %lu diagonal collapses, inner nodes "
+              "not of valence 4 %lu -> %lu; "
               "%lu node moves in %d sweeps, %lu of them along curves, %lu "
               "of %lu cut curves crossed): eta min %.3g -> %.3g, mean %.3g "
               "-> %.3g (%g s)",
               g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(),
-              rotated.rotations, rotated.irregularBefore,
+              rotated.rotations, collapsed.collapses, rotated.irregularBefore,
               rotated.irregularAfter, r.moves, r.sweeps, r.slides, crossed,
               g.cuts.size(), etaMinBefore, r.etaMinAfter, etaMeanBefore,
               r.etaMeanAfter, TimeOfDay() - t0);

@@ -1,0 +1,333 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+#include "SVector3.h"
+#include "closestTriangle.h"
+#include "meshFidelity.h"
+#include "quadDiagonalCollapse.h"
+#include "quadEdgeRotation.h"
+#include "quadQuality.h"
+
+namespace {
+
+  typedef std::array<int, 4> quad;
+
+  SVector3 quadNormal(const quad &q, const std::vector<SPoint3> &p)
+  {
+    SVector3 n =
+      crossprod(SVector3(p[q[0]], p[q[2]]), SVector3(p[q[1]], p[q[3]]));
+    const double length = n.norm();
+    return length > 0. ? n * (1. / length) : n;
+  }
+
+  // Per point, whether its elements close around it (each side from it
+  // shared by two elements); points of no element are not
+  std::vector<bool> closedRings(const surfaceMesh &m,
+                                const std::vector<bool> &removed)
+  {
+    std::map<std::pair<int, int>, int> count;
+    auto add = [&](int a, int b) {
+      count[a < b ? std::make_pair(a, b) : std::make_pair(b, a)]++;
+    };
+    for(const std::array<int, 3> &t : m.triangles)
+      for(int k = 0; k < 3; k++) add(t[k], t[(k + 1) % 3]);
+    for(std::size_t i = 0; i < m.quadrangles.size(); i++)
+      if(!removed[i])
+        for(int k = 0; k < 4; k++)
+          add(m.quadrangles[i][k], m.quadrangles[i][(k + 1) % 4]);
+    std::vector<bool> closed(m.points.size(), true), used(m.points.size());
+    for(const auto &c : count) {
+      used[c.first.first] = used[c.first.second] = true;
+      if(c.second != 2) closed[c.first.first] = closed[c.first.second] = false;
+    }
+    for(std::size_t i = 0; i < used.size(); i++)
+      if(!used[i]) closed[i] = false;
+    return closed;
+  }
+
+  std::size_t irregularCount(const surfaceMesh &m,
+                             const std::vector<bool> &removed)
+  {
+    const std::vector<bool> closed = closedRings(m, removed);
+    std::vector<std::set<int> > neighbours(m.points.size());
+    for(const std::array<int, 3> &t : m.triangles)
+      for(int k = 0; k < 3; k++) {
+        neighbours[t[k]].insert(t[(k + 1) % 3]);
+        neighbours[t[(k + 1) % 3]].insert(t[k]);
+      }
+    for(std::size_t i = 0; i < m.quadrangles.size(); i++)
+      if(!removed[i])
+        for(int k = 0; k < 4; k++) {
+          const quad &q = m.quadrangles[i];
+          neighbours[q[k]].insert(q[(k + 1) % 4]);
+          neighbours[q[(k + 1) % 4]].insert(q[k]);
+        }
+    std::size_t n = 0;
+    for(std::size_t i = 0; i < closed.size(); i++)
+      n += closed[i] && neighbours[i].size() != 4;
+    return n;
+  }
+
+  // One sweep: the state of the mesh at its start (neighbours, quadrangles
+  // at each point), each quadrangle changed at most once
+  struct collapsePass {
+    surfaceMesh &m;
+    const std::vector<int> &part, &owner, &ideal;
+    const std::vector<bool> &closed;
+    std::vector<int> &mergedInto;
+    std::vector<bool> &removed;
+    const quadCollapseOptions &o;
+    std::vector<std::set<int> > neighbours;
+    std::vector<std::vector<int> > quadsAt;
+    std::vector<bool> onTriangle, touched;
+
+    void build()
+    {
+      neighbours.assign(m.points.size(), std::set<int>());
+      quadsAt.assign(m.points.size(), std::vector<int>());
+      onTriangle.assign(m.points.size(), false);
+      touched.assign(m.quadrangles.size(), false);
+      for(const std::array<int, 3> &t : m.triangles)
+        for(int k = 0; k < 3; k++) {
+          onTriangle[t[k]] = true;
+          neighbours[t[k]].insert(t[(k + 1) % 3]);
+          neighbours[t[(k + 1) % 3]].insert(t[k]);
+        }
+      for(std::size_t i = 0; i < m.quadrangles.size(); i++) {
+        if(removed[i]) continue;
+        const quad &q = m.quadrangles[i];
+        for(int k = 0; k < 4; k++) {
+          quadsAt[q[k]].push_back((int)i);
+          neighbours[q[k]].insert(q[(k + 1) % 4]);
+          neighbours[q[(k + 1) % 4]].insert(q[k]);
+        }
+      }
+    }
+
+    int partOf(int q) const { return part.empty() ? 0 : part[q]; }
+
+    double cost(int v, int change) const
+    {
+      const double d = (double)neighbours[v].size() + change - ideal[v];
+      return d * d;
+    }
+
+    // The change of the valences' squared distance to their ideal when q
+    // collapses along its diagonal from corner k (a, c = corners k, k + 2)
+    double change(int q, int k) const
+    {
+      const quad &Q = m.quadrangles[q];
+      const int a = Q[k], b = Q[(k + 1) % 4], c = Q[(k + 2) % 4],
+                d = Q[(k + 3) % 4];
+      const double merged =
+        (double)neighbours[a].size() + neighbours[c].size() - 2 - ideal[a];
+      return merged * merged + cost(b, -1) + cost(d, -1) - cost(a, 0) -
+             cost(c, 0) - cost(b, 0) - cost(d, 0);
+    }
+
+    // Whether a and c may merge without two elements sharing more than a
+    // side or a corner losing its last quadrangles but one
+    bool mergeable(int q, int a, int b, int c, int d) const
+    {
+      if(owner[a] < 0 || owner[a] != owner[c] || owner[a] != partOf(q) ||
+         onTriangle[a] || onTriangle[c] || neighbours[a].count(c))
+        return false;
+      std::vector<int> common;
+      std::set_intersection(neighbours[a].begin(), neighbours[a].end(),
+                            neighbours[c].begin(), neighbours[c].end(),
+                            std::back_inserter(common));
+      if(common.size() != 2 || !std::count(common.begin(), common.end(), b) ||
+         !std::count(common.begin(), common.end(), d))
+        return false;
+      for(int v : {b, d}) {
+        const int least = closed[v] ? 3 : 2;
+        if((int)neighbours[v].size() - 1 < least) return false;
+      }
+      return true;
+    }
+
+    // The quadrangles around a and c but q, with c as a
+    std::vector<std::pair<int, quad> > around(int q, int a, int c) const
+    {
+      std::vector<std::pair<int, quad> > out;
+      for(int v : {a, c})
+        for(int i : quadsAt[v]) {
+          if(i == q) continue;
+          quad Q = m.quadrangles[i];
+          for(int &x : Q)
+            if(x == c) x = a;
+          out.push_back(std::make_pair(i, Q));
+        }
+      return out;
+    }
+
+    SPoint3 onInput(const SPoint3 &x) const
+    {
+      return o.onInput ? o.onInput->closest(x).point : x;
+    }
+
+    // The worst eta of the quadrangles `next` with a at x, or -1 where one
+    // turns by o.maxTurn or more from what it was
+    double worstAt(int a, const SPoint3 &x,
+                   const std::vector<std::pair<int, quad> > &next)
+    {
+      const double cosTurn = std::cos(o.maxTurn);
+      std::vector<SVector3> before;
+      for(const auto &n : next)
+        before.push_back(quadNormal(m.quadrangles[n.first], m.points));
+      const SPoint3 old = m.points[a];
+      m.points[a] = x;
+      double worst = 1.;
+      for(std::size_t i = 0; i < next.size() && worst >= 0.; i++) {
+        const quad &Q = next[i].second;
+        if(dot(quadNormal(Q, m.points), before[i]) < cosTurn)
+          worst = -1.;
+        else
+          worst = std::min(worst, quadEta(m.points[Q[0]], m.points[Q[1]],
+                                          m.points[Q[2]], m.points[Q[3]]));
+      }
+      m.points[a] = old;
+      return worst;
+    }
+
+    // How far p lies from the quadrangles `next` with a at x (each taken as
+    // the four triangles of its two diagonals)
+    double distanceTo(const SPoint3 &p, int a, const SPoint3 &x,
+                      const std::vector<std::pair<int, quad> > &next) const
+    {
+      double d = 1e300;
+      for(const auto &n : next) {
+        SPoint3 c[4];
+        for(int j = 0; j < 4; j++)
+          c[j] = n.second[j] == a ? x : m.points[n.second[j]];
+        for(int j = 0; j < 4; j++)
+          d = std::min(d, p.distance(closestPointOnTriangle(
+                            p, c[j], c[(j + 1) % 4], c[(j + 2) % 4])));
+      }
+      return d;
+    }
+
+    // The farthest from the input of the quadrangles' centres (the two
+    // diagonals' midpoints of each), with a at x
+    double farthestFromInput(int a, const SPoint3 &x,
+                             const std::vector<quad> &quads) const
+    {
+      double d = 0.;
+      for(const quad &Q : quads) {
+        SPoint3 c[4];
+        for(int j = 0; j < 4; j++) c[j] = Q[j] == a ? x : m.points[Q[j]];
+        for(int j = 0; j < 2; j++)
+          d = std::max(d, o.onInput->closest((c[j] + c[j + 2]) * 0.5).distance);
+      }
+      return d;
+    }
+
+    // Whether the new quadrangles follow the input as closely as the old
+    // ones did, up to o.tolerance times `side`: a bump the old ones
+    // followed is not cut off
+    bool followsInput(int q, int a, const SPoint3 &x,
+                      const std::vector<std::pair<int, quad> > &next,
+                      double side) const
+    {
+      if(!o.onInput) return true;
+      std::vector<quad> before = {m.quadrangles[q]}, after;
+      for(const auto &n : next) {
+        before.push_back(m.quadrangles[n.first]);
+        after.push_back(n.second);
+      }
+      return farthestFromInput(a, x, after) <=
+             farthestFromInput(-1, x, before) + o.tolerance * side;
+    }
+
+    bool collapse(int q, int k)
+    {
+      const quad Q = m.quadrangles[q];
+      const int a = Q[k], b = Q[(k + 1) % 4], c = Q[(k + 2) % 4],
+                d = Q[(k + 3) % 4];
+      if(!mergeable(q, a, b, c, d)) return false;
+      const std::vector<std::pair<int, quad> > next = around(q, a, c);
+      std::set<int> ring;
+      for(const auto &n : next)
+        for(int v : n.second)
+          if(v != a) ring.insert(v);
+      SPoint3 centroid(0., 0., 0.);
+      for(int v : ring) centroid += m.points[v];
+      centroid *= 1. / std::max<std::size_t>(1, ring.size());
+      double best = -1.;
+      SPoint3 place;
+      for(const SPoint3 &x :
+          {onInput((m.points[a] + m.points[c]) * 0.5), onInput(centroid)}) {
+        const double worst = worstAt(a, x, next);
+        if(worst > best) {
+          best = worst;
+          place = x;
+        }
+      }
+      if(best < o.minEta) return false;
+      // the two nodes stay on the new mesh: a node on a tip or a crease
+      // keeps the mesh there
+      double side = 0.;
+      for(int j = 0; j < 4; j++)
+        side += 0.25 * m.points[Q[j]].distance(m.points[Q[(j + 1) % 4]]);
+      for(int v : {a, c})
+        if(o.onInput &&
+           distanceTo(m.points[v], a, place, next) > o.nodeTolerance * side)
+          return false;
+      if(!followsInput(q, a, place, next, side)) return false;
+      m.points[a] = place;
+      for(const auto &n : next) m.quadrangles[n.first] = n.second;
+      removed[q] = true;
+      mergedInto[c] = a;
+      for(int v : {a, b, c, d})
+        for(int i : quadsAt[v]) touched[i] = true;
+      return true;
+    }
+
+    std::size_t sweep()
+    {
+      build();
+      std::vector<std::pair<double, std::pair<int, int> > > candidates;
+      for(std::size_t q = 0; q < m.quadrangles.size(); q++)
+        for(int k = 0; k < 2 && !removed[q]; k++) {
+          const double c = change((int)q, k);
+          if(c < 0.) candidates.push_back({c, {(int)q, k}});
+        }
+      std::sort(candidates.begin(), candidates.end());
+      std::size_t collapses = 0;
+      for(const auto &c : candidates) {
+        const int q = c.second.first;
+        if(touched[q] || removed[q]) continue;
+        collapses += collapse(q, c.second.second);
+      }
+      return collapses;
+    }
+  };
+
+} // namespace
+
+quadCollapseResult collapseQuadDiagonals(surfaceMesh &m,
+                                         const std::vector<int> &part,
+                                         const std::vector<int> &owner,
+                                         std::vector<int> &mergedInto,
+                                         std::vector<bool> &removed,
+                                         const quadCollapseOptions &o)
+{
+  quadCollapseResult r;
+  mergedInto.assign(m.points.size(), -1);
+  removed.assign(m.quadrangles.size(), false);
+  const std::vector<int> ideal = idealValences(m);
+  const std::vector<bool> closed = closedRings(m, removed);
+  r.irregularBefore = irregularCount(m, removed);
+  collapsePass pass{m, part, owner, ideal, closed, mergedInto, removed, o};
+  while(r.passes < o.maxPasses) {
+    r.passes++;
+    const std::size_t collapses = pass.sweep();
+    r.collapses += collapses;
+    if(!collapses) break;
+  }
+  r.irregularAfter = irregularCount(m, removed);
+  return r;
+}
