@@ -5,6 +5,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include "BackgroundMeshTools.h"
 #include "GEdge.h"
 #include "GFace.h"
 #include "GModel.h"
@@ -142,6 +143,7 @@ namespace {
                                        std::vector<MQuadrangle *> &quads,
                                        std::vector<int> &part,
                                        const closestTriangleSearch &onInput,
+                                       double worst,
                                        std::vector<MVertex *> &gone)
   {
     const std::vector<int> owner = ownersOf(g, nodes);
@@ -149,6 +151,13 @@ namespace {
     std::vector<bool> removed;
     quadCollapseOptions o;
     o.onInput = &onInput;
+    o.minEta = std::max(o.minEta, worst);
+    // the size field of the group's first face (the model's, for the
+    // faces of one patch)
+    GFace *first = g.faces.front();
+    o.size = [first](const SPoint3 &x) {
+      return BGM_MeshSize(first, 0., 0., x.x(), x.y(), x.z());
+    };
     const quadCollapseResult r =
       collapseQuadDiagonals(m, part, owner, mergedInto, removed, o);
     if(!r.collapses) return r;
@@ -196,19 +205,18 @@ namespace {
 
   // Edge rotations, then diagonal collapses and rotations again; writes the
   // new corners to the quadrangles
-  quadRotationResult
-  makeRegular(const cutGroup &g, surfaceMesh &m,
-              const std::vector<MVertex *> &nodes,
-              std::vector<MQuadrangle *> &quads, std::vector<int> &part,
-              const surfaceMesh &input, const closestTriangleSearch &onInput,
-              quadCollapseResult &collapsed, std::vector<MVertex *> &gone)
+  quadRotationResult makeRegular(
+    const cutGroup &g, surfaceMesh &m, const std::vector<MVertex *> &nodes,
+    std::vector<MQuadrangle *> &quads, std::vector<int> &part,
+    const surfaceMesh &input, const closestTriangleSearch &onInput,
+    double worst, quadCollapseResult &collapsed, std::vector<MVertex *> &gone)
   {
     quadRotationResult r = rotateEdges(g, m, nodes, part, input, onInput);
     // a collapse can let an edge rotate, and a rotation bring two nodes of
     // valence 3 across a quadrangle: a few rounds
     for(int round = 0; round < 4; round++) {
       const quadCollapseResult c =
-        collapseDiagonals(g, m, nodes, quads, part, onInput, gone);
+        collapseDiagonals(g, m, nodes, quads, part, onInput, worst, gone);
       collapsed.collapses += c.collapses;
       if(!c.collapses) break;
       const quadRotationResult again =
@@ -391,8 +399,8 @@ namespace {
     }
     quadCollapseResult collapsed;
     std::vector<MVertex *> gone;
-    const quadRotationResult rotated =
-      makeRegular(g, m, nodes, quads, part, input, onInput, collapsed, gone);
+    const quadRotationResult rotated = makeRegular(
+      g, m, nodes, quads, part, input, onInput, etaMinBefore, collapsed, gone);
     const std::set<MVertex *> goneSet(gone.begin(), gone.end());
     for(std::size_t i = 0; i < nodes.size(); i++)
       if(goneSet.count(nodes[i])) movable[i] = false;

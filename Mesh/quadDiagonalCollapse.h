@@ -16,7 +16,9 @@
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <vector>
+#include "SPoint3.h"
 
 class closestTriangleSearch;
 struct surfaceMesh;
@@ -35,6 +37,11 @@ struct quadCollapseOptions {
   // farther from the input than the old ones' by more than tolerance times
   // it
   double nodeTolerance = 0.1, tolerance = 0.05;
+  // the size asked at a point (empty: none): a quadrangle whose mean side
+  // is over `largest` times the size at its centre does not collapse (its
+  // neighbours grow into it)
+  std::function<double(const SPoint3 &)> size;
+  double largest = 1.1;
   // the input surface the mesh lies on (null: not projected): the merged
   // node goes to the input's point closest to where it is tried
   const closestTriangleSearch *onInput = nullptr;

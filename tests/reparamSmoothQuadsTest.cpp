@@ -121,13 +121,14 @@ TEST(smoothQuads, cutNodesMoveAcrossAndTheMeshStaysWhole)
   EXPECT_EQ(before.freeEdges, 0u);
   EXPECT_EQ(reparamSmoothQuadMeshes(GModel::current()), 1);
   const quadMesh after = measure();
-  // a few quadrangles collapsed (Mesh/quadDiagonalCollapse.h): 915 -> 903
+  // a few quadrangles collapsed (Mesh/quadDiagonalCollapse.h): 915 -> 887
   EXPECT_LT(after.quads, before.quads);
-  EXPECT_GT(after.quads, 0.97 * before.quads);
+  EXPECT_GT(after.quads, 0.95 * before.quads);
   EXPECT_EQ(after.freeEdges, 0u); // closed, manifold
   EXPECT_GE(after.crossedCuts, 1u);
   EXPECT_GT(after.etaMin, before.etaMin + 0.05); // measured 0.490 -> 0.618
-  EXPECT_GT(after.etaMean, before.etaMean + 0.008); // 0.866 -> 0.883
+  // 0.866 -> 0.885 (0.868 -> 0.881 without the collapses)
+  EXPECT_GT(after.etaMean, before.etaMean + 0.016);
   // the nodes on the input: a polyhedron inside the unit sphere, no node
   // deeper than the input's facets (0.996)
   EXPECT_LT(after.farthestRadius, 1. + 1e-9);
