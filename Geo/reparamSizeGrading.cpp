@@ -1,6 +1,8 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -15,6 +17,7 @@
 #include "MLine.h"
 #include "MVertex.h"
 #include "closestTriangle.h"
+#include "creaseChains.h"
 #include "edgeByCoordinates.h"
 #include "gradedBoundarySize.h"
 #include "meshFidelity.h"
@@ -86,6 +89,10 @@ namespace {
     GModel *model = nullptr;
     std::unique_ptr<gradedBoundarySize> size;
     std::set<const GEdge *> alongStrips; // the curves of narrow faces
+    // the curves with a fold beside them (keepUnfolded) keep the sizes
+    // without the strips'
+    std::set<const GEdge *> folded;
+    std::unique_ptr<gradedBoundarySize> withoutStrips;
   };
   curveGrading curves;
 
@@ -176,14 +183,78 @@ namespace {
     return cuts;
   }
 
+  // The curves of gf with a strip's point on them (every corner of theirs
+  // becomes a node, Mesh/curveCornerSnap.h)
+  void alongStrips(GFace *gf, const surfaceMesh &input,
+                   const std::vector<stripWidth> &strips,
+                   std::set<const GEdge *> &along)
+  {
+    std::set<edgeByCoordinates> edges;
+    for(const stripWidth &s : strips)
+      edges.insert(byCoordinates(input.points[s.a], input.points[s.b]));
+    for(GEdge *ge : gf->edges()) {
+      std::vector<SPoint3> polyline;
+      if(along.count(ge) || !reparamInputPolyline(ge, polyline)) continue;
+      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+        if(edges.count(byCoordinates(polyline[i], polyline[i + 1]))) {
+          along.insert(ge);
+          break;
+        }
+    }
+  }
+
+  // The strips of gf but those along a curve whose other face folds
+  // within a quarter of the size beside it (a crease of 60 degrees or more
+  // there, Mesh/creaseChains.h): that face's triangles on the curve's
+  // short segments reach over the fold (adis16480: a slot 0.28 mm wide
+  // and 0.13 mm deep, whose walls belong to the plate around, at the size
+  // 1.5 mm: the plate's triangle on its end segment turned over)
+  std::vector<stripWidth>
+  keepUnfolded(GFace *gf, const surfaceMesh &input,
+               const std::vector<stripWidth> &strips,
+               const std::function<double(const SPoint3 &)> &size,
+               std::map<GFace *, surfaceMesh> &inputs,
+               std::set<const GEdge *> &foldedCurves)
+  {
+    if(strips.empty()) return strips;
+    std::set<edgeByCoordinates> folded;
+    for(GEdge *ge : gf->edges()) {
+      std::vector<SPoint3> polyline;
+      if(!reparamInputPolyline(ge, polyline) || polyline.size() < 2) continue;
+      const double near = finestStrip * size(polyline[polyline.size() / 2]);
+      bool folds = false;
+      for(GFace *other : ge->faces()) {
+        if(other == gf || folds ||
+           other->geomType() != GEntity::DiscreteSurface)
+          continue;
+        auto it = inputs.find(other);
+        if(it == inputs.end())
+          it = inputs.emplace(other, inputTriangulationOf(other)).first;
+        folds = creaseWithin(it->second.points, it->second.triangles, polyline,
+                             near, M_PI / 3.);
+      }
+      if(!folds) continue;
+      foldedCurves.insert(ge);
+      for(std::size_t i = 0; i + 1 < polyline.size(); i++)
+        folded.insert(byCoordinates(polyline[i], polyline[i + 1]));
+    }
+    std::vector<stripWidth> kept;
+    for(const stripWidth &s : strips)
+      if(!folded.count(byCoordinates(input.points[s.a], input.points[s.b])))
+        kept.push_back(s);
+    return kept;
+  }
+
   // The boundary points of the discrete faces narrower there than the size
   // (Mesh/narrowStrips.h), with their width, as sources of the curves'
   // sizes: a strip's curves then get nodes about its width apart and the
   // faces' sizes grow from them
   void narrowStrips(GModel *m, std::vector<SPoint3> &sources,
-                    std::vector<double> &sizes, std::set<const GEdge *> &along)
+                    std::vector<double> &sizes, std::set<const GEdge *> &along,
+                    std::set<const GEdge *> &folded)
   {
     std::size_t points = 0, faces = 0;
+    std::map<GFace *, surfaceMesh> inputs;
     for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
       GFace *gf = *it;
       const parametrizationRecord *map = findParametrization(gf);
@@ -197,16 +268,18 @@ namespace {
       const auto side = [&](int a, int b) {
         return !cuts.count(byCoordinates(input.points[a], input.points[b]));
       };
-      const std::vector<stripWidth> strips = narrowStripWidths(
-        input, flatInput(gf, input), size, nearlyTheSize, side);
+      const std::vector<stripWidth> strips =
+        keepUnfolded(gf, input,
+                     narrowStripWidths(input, flatInput(gf, input), size,
+                                       nearlyTheSize, side),
+                     size, inputs, folded);
       for(const stripWidth &s : strips) {
         sources.push_back(s.point);
         sizes.push_back(std::max(s.width, finestStrip * size(s.point)));
       }
       points += strips.size();
       faces += !strips.empty();
-      if(!strips.empty())
-        for(GEdge *ge : gf->edges()) along.insert(ge);
+      alongStrips(gf, input, strips, along);
     }
     if(points)
       Msg::Info("Reparam: %lu surface%s narrower than the size: their curves "
@@ -229,7 +302,9 @@ namespace {
   // gradient, the ends of those shorter than the size asked along them,
   // with the length of their segments, as the sources of the curves' sizes
   std::unique_ptr<gradedBoundarySize>
-  measureCurves(GModel *m, double gradient, std::set<const GEdge *> &along)
+  measureCurves(GModel *m, double gradient, std::set<const GEdge *> &along,
+                std::set<const GEdge *> &folded,
+                std::unique_ptr<gradedBoundarySize> &withoutStrips)
   {
     const int segments = std::max(1, CTX::instance()->mesh.minCurveNodes - 1);
     std::vector<SPoint3> ends;
@@ -262,8 +337,11 @@ namespace {
     }
     if(gradient > 0.) {
       pointsNearCurves(m, ends, sizes);
-      if(getReparamOptions().meshSizeFromStrips)
-        narrowStrips(m, ends, sizes, along);
+      if(getReparamOptions().meshSizeFromStrips) {
+        withoutStrips.reset(
+          new gradedBoundarySize(ends, sizes, gradient, reach));
+        narrowStrips(m, ends, sizes, along, folded);
+      }
     }
     return std::unique_ptr<gradedBoundarySize>(
       new gradedBoundarySize(ends, sizes, gradient, reach));
@@ -277,12 +355,16 @@ void reparamBeginCurveSizeGrading(GModel *m)
     return;
   reparamHideSmallCreaseCurves(m);
   const double gradient = getReparamOptions().meshSizeGradient;
-  std::set<const GEdge *> along;
-  std::unique_ptr<gradedBoundarySize> size = measureCurves(m, gradient, along);
+  std::set<const GEdge *> along, folded;
+  std::unique_ptr<gradedBoundarySize> withoutStrips;
+  std::unique_ptr<gradedBoundarySize> size =
+    measureCurves(m, gradient, along, folded, withoutStrips);
   if(gradient <= 0. || !size->size()) return;
   Msg::Debug("Reparam: curve sizes graded from %lu sources", size->size());
   curves.size = std::move(size);
   curves.alongStrips.swap(along);
+  curves.folded.swap(folded);
+  curves.withoutStrips = std::move(withoutStrips);
   curves.model = m;
 }
 
@@ -329,6 +411,8 @@ bool reparamCurveAlongNarrowStrip(const GEdge *ge)
 double reparamGradedCurveSize(const GEdge *ge, const SPoint3 &x, double size)
 {
   if(!reparamCurveSizesGraded(ge)) return size;
+  if(curves.withoutStrips && curves.folded.count(ge))
+    return (*curves.withoutStrips)(x, size);
   return (*curves.size)(x, size);
 }
 

@@ -1,10 +1,13 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include "closestTriangle.h"
+#include "SVector3.h"
 #include "creaseChains.h"
+#include "triangleAdjacency.h"
 
 namespace {
 
@@ -128,5 +131,51 @@ bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
   for(const auto &other : others)
     for(const SPoint3 &end : {crease.front(), crease.back()})
       if(distanceToPolyline(end, other) < 0.5 * size) return true;
+  return false;
+}
+
+bool creaseWithin(const std::vector<SPoint3> &points,
+                  const std::vector<std::array<int, 3> > &triangles,
+                  const std::vector<SPoint3> &polyline, double distance,
+                  double angle)
+{
+  if(polyline.size() < 2 || triangles.empty()) return false;
+  SPoint3 lo = polyline.front(), hi = polyline.front();
+  for(const SPoint3 &p : polyline)
+    for(int k = 0; k < 3; k++) {
+      lo[k] = std::min(lo[k], p[k] - distance);
+      hi[k] = std::max(hi[k], p[k] + distance);
+    }
+  auto normal = [&](int t) {
+    const std::array<int, 3> &c = triangles[t];
+    SVector3 n = crossprod(SVector3(points[c[0]], points[c[1]]),
+                           SVector3(points[c[0]], points[c[2]]));
+    const double length = n.norm();
+    return length > 0. ? n * (1. / length) : n;
+  };
+  const double cosAngle = std::cos(angle);
+  const triangleAdjacency adjacency = makeTriangleAdjacency(triangles);
+  for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
+    if(adjacency.numTriangles((int)e) != 2) continue;
+    const SPoint3 &a = points[adjacency.edges[e][0]];
+    const SPoint3 &b = points[adjacency.edges[e][1]];
+    bool inside = true;
+    for(int k = 0; k < 3; k++)
+      inside = inside && std::max(a[k], b[k]) >= lo[k] &&
+               std::min(a[k], b[k]) <= hi[k];
+    if(!inside) continue;
+    const int s = adjacency.edgeStart[e];
+    if(dot(normal(adjacency.edgeTriangles[s]),
+           normal(adjacency.edgeTriangles[s + 1])) > cosAngle)
+      continue;
+    // the crease edge's ends and points a quarter of it apart
+    for(double t : {0., 0.25, 0.5, 0.75, 1.})
+      for(std::size_t i = 0; i + 1 < polyline.size(); i++) {
+        const SPoint3 p = a + (b - a) * t;
+        const SPoint3 q =
+          closestPointOnSegment(p, polyline[i], polyline[i + 1]);
+        if(p.distance(q) < distance) return true;
+      }
+  }
   return false;
 }

@@ -50,4 +50,13 @@ bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
                            const std::vector<std::vector<SPoint3> > &others,
                            double size);
 
+// Whether two triangles sharing an edge meet at a crease sharper than
+// `angle` (radians, between their normals) within `distance` of the
+// polyline: the surface folds right beside it (the walls of a slot
+// shallower than the mesh size, in the same face as the plate around)
+bool creaseWithin(const std::vector<SPoint3> &points,
+                  const std::vector<std::array<int, 3> > &triangles,
+                  const std::vector<SPoint3> &polyline, double distance,
+                  double angle);
+
 #endif

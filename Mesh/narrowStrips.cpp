@@ -274,7 +274,8 @@ narrowStripWidths(const surfaceMesh &m, const std::vector<SPoint3> &flat,
           width = d;
       });
       if(width < widest)
-        samples.push_back({{p, width}, e.loop, e.s + t * length, step, here});
+        samples.push_back(
+          {{p, width, e.a, e.b}, e.loop, e.s + t * length, step, here});
     }
   }
   return longRuns(samples, loops);

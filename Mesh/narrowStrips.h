@@ -20,6 +20,7 @@ struct surfaceMesh;
 struct stripWidth {
   SPoint3 point; // on the boundary
   double width;
+  int a = -1, b = -1; // the boundary edge it lies on (m's points)
 };
 
 // Points of m's boundary (its edges with one triangle), spaced along it by

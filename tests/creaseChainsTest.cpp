@@ -187,3 +187,38 @@ TEST(creaseChains, creaseTooSmallWhenShortAndBentOrEndingByAnotherCurve)
   EXPECT_FALSE(creaseTooSmallForMesh({SPoint3(0., 0., 0.)}, {}, size));
   EXPECT_FALSE(creaseTooSmallForMesh(hairpin, {}, 0.));
 }
+
+// A plate (y = 0, 0 <= x <= 1) with a wall going up from x = 1 (the crease
+// between them along x = 1, folded by `fold` radians): a polyline along
+// the plate's far side x = 0 is 1 from the crease
+namespace {
+
+  testTriangulation plateAndWall(double fold)
+  {
+    testTriangulation t = rectangleGrid(4, 4, 2., 1.);
+    for(auto &p : t.points)
+      if(p.x() > 1.)
+        p = SPoint3(1. + (p.x() - 1.) * std::cos(fold), p.y(),
+                    (p.x() - 1.) * std::sin(fold));
+    return t;
+  }
+
+} // namespace
+
+TEST(creaseChains, creaseWithinADistanceOfACurve)
+{
+  const testTriangulation t = plateAndWall(M_PI / 2.);
+  const std::vector<SPoint3> nearSide = {SPoint3(0.8, 0., 0.),
+                                         SPoint3(0.8, 1., 0.)};
+  const std::vector<SPoint3> farSide = {SPoint3(0., 0., 0.),
+                                        SPoint3(0., 1., 0.)};
+  EXPECT_TRUE(creaseWithin(t.points, t.triangles, nearSide, 0.25, M_PI / 3.));
+  EXPECT_FALSE(creaseWithin(t.points, t.triangles, farSide, 0.25, M_PI / 3.));
+  EXPECT_TRUE(creaseWithin(t.points, t.triangles, farSide, 1.01, M_PI / 3.));
+  // a fold of 45 degrees is no crease of 60
+  const testTriangulation gentle = plateAndWall(M_PI / 4.);
+  EXPECT_FALSE(
+    creaseWithin(gentle.points, gentle.triangles, nearSide, 0.25, M_PI / 3.));
+  EXPECT_TRUE(
+    creaseWithin(gentle.points, gentle.triangles, nearSide, 0.25, M_PI / 6.));
+}

@@ -5,7 +5,10 @@
 # prints Gmsh's log.
 #
 #   remeshStl.sh GMSH_EXECUTABLE MESH.stl SIZE [ALGORITHM [RECOMBINE_ALL
-#                [OPTIMIZE]]]
+#                [OPTIMIZE [OPTIONS]]]]
+#
+# OPTIONS: one more .geo statement before Mesh 2, without its semicolon
+# (CMake splits arguments at semicolons)
 set -euo pipefail
 gmsh=$1
 mesh=$2
@@ -13,6 +16,7 @@ size=$3
 algorithm=${4:-6}
 recombine=${5:-0}
 optimize=${6:+Mesh.CompoundOptimize = $6;}
+options=${7:+$7;}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat > "$work/remesh.geo" <<GEO
@@ -24,6 +28,7 @@ Mesh.MeshSizeMax = $size;
 Mesh.Algorithm = $algorithm;
 Mesh.RecombineAll = $recombine;
 $optimize
+$options
 Mesh 2;
 GEO
 "$gmsh" "$work/remesh.geo" -parse_and_exit 2>&1
