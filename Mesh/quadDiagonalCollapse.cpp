@@ -23,52 +23,16 @@ namespace {
     return length > 0. ? n * (1. / length) : n;
   }
 
-  // Per point, whether its elements close around it (each side from it
-  // shared by two elements); points of no element are not
-  std::vector<bool> closedRings(const surfaceMesh &m,
-                                const std::vector<bool> &removed)
-  {
-    std::map<std::pair<int, int>, int> count;
-    auto add = [&](int a, int b) {
-      count[a < b ? std::make_pair(a, b) : std::make_pair(b, a)]++;
-    };
-    for(const std::array<int, 3> &t : m.triangles)
-      for(int k = 0; k < 3; k++) add(t[k], t[(k + 1) % 3]);
-    for(std::size_t i = 0; i < m.quadrangles.size(); i++)
-      if(!removed[i])
-        for(int k = 0; k < 4; k++)
-          add(m.quadrangles[i][k], m.quadrangles[i][(k + 1) % 4]);
-    std::vector<bool> closed(m.points.size(), true), used(m.points.size());
-    for(const auto &c : count) {
-      used[c.first.first] = used[c.first.second] = true;
-      if(c.second != 2) closed[c.first.first] = closed[c.first.second] = false;
-    }
-    for(std::size_t i = 0; i < used.size(); i++)
-      if(!used[i]) closed[i] = false;
-    return closed;
-  }
-
+  // m's inner nodes not of valence 4, without the quadrangles removed
   std::size_t irregularCount(const surfaceMesh &m,
                              const std::vector<bool> &removed)
   {
-    const std::vector<bool> closed = closedRings(m, removed);
-    std::vector<std::set<int> > neighbours(m.points.size());
-    for(const std::array<int, 3> &t : m.triangles)
-      for(int k = 0; k < 3; k++) {
-        neighbours[t[k]].insert(t[(k + 1) % 3]);
-        neighbours[t[(k + 1) % 3]].insert(t[k]);
-      }
+    surfaceMesh live;
+    live.points = m.points;
+    live.triangles = m.triangles;
     for(std::size_t i = 0; i < m.quadrangles.size(); i++)
-      if(!removed[i])
-        for(int k = 0; k < 4; k++) {
-          const quad &q = m.quadrangles[i];
-          neighbours[q[k]].insert(q[(k + 1) % 4]);
-          neighbours[q[(k + 1) % 4]].insert(q[k]);
-        }
-    std::size_t n = 0;
-    for(std::size_t i = 0; i < closed.size(); i++)
-      n += closed[i] && neighbours[i].size() != 4;
-    return n;
+      if(!removed[i]) live.quadrangles.push_back(m.quadrangles[i]);
+    return irregularNodes(live);
   }
 
   // The mesh's connectivity, kept exact through the collapses (and their
@@ -404,7 +368,7 @@ quadCollapseResult collapseQuadDiagonals(surfaceMesh &m,
   mergedInto.assign(m.points.size(), -1);
   removed.assign(m.quadrangles.size(), false);
   const std::vector<int> ideal = idealValences(m);
-  const std::vector<bool> closed = closedRings(m, removed);
+  const std::vector<bool> closed = closedRings(m);
   r.irregularBefore = irregularCount(m, removed);
   collapser pass{m, part, owner, ideal, closed, mergedInto, removed, o};
   pass.build();

@@ -40,26 +40,6 @@ namespace {
     return neighbours;
   }
 
-  // Per point, whether its elements close around it (each side from it
-  // shared by two elements)
-  std::vector<bool> closedRings(const surfaceMesh &m)
-  {
-    std::map<side, int> count;
-    for(const std::array<int, 4> &e : elementsOf(m)) {
-      const int n = cornersOf(e);
-      for(int k = 0; k < n; k++) count[sideOf(e[k], e[(k + 1) % n])]++;
-    }
-    std::vector<bool> closed(m.points.size(), true);
-    std::vector<bool> used(m.points.size(), false);
-    for(const auto &c : count) {
-      used[c.first.first] = used[c.first.second] = true;
-      if(c.second != 2) closed[c.first.first] = closed[c.first.second] = false;
-    }
-    for(std::size_t i = 0; i < used.size(); i++)
-      if(!used[i]) closed[i] = false;
-    return closed;
-  }
-
   double cornerAngle(const SPoint3 &at, const SPoint3 &next,
                      const SPoint3 &previous)
   {
@@ -279,6 +259,29 @@ namespace {
   };
 
 } // namespace
+
+std::vector<bool> closedRings(const surfaceMesh &m)
+{
+  std::map<side, int> count;
+  for(const std::array<int, 4> &e : elementsOf(m)) {
+    const int n = cornersOf(e);
+    for(int k = 0; k < n; k++) count[sideOf(e[k], e[(k + 1) % n])]++;
+  }
+  std::vector<bool> closed(m.points.size(), true);
+  std::vector<bool> used(m.points.size(), false);
+  for(const auto &c : count) {
+    used[c.first.first] = used[c.first.second] = true;
+    if(c.second != 2) closed[c.first.first] = closed[c.first.second] = false;
+  }
+  for(std::size_t i = 0; i < used.size(); i++)
+    if(!used[i]) closed[i] = false;
+  return closed;
+}
+
+std::size_t irregularNodes(const surfaceMesh &m)
+{
+  return irregularCount(valences(m), closedRings(m));
+}
 
 std::vector<int> valences(const surfaceMesh &m)
 {

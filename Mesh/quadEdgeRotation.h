@@ -57,6 +57,13 @@ std::vector<int> idealValences(const surfaceMesh &m);
 // Per point of m, how many other points it shares an element edge with
 std::vector<int> valences(const surfaceMesh &m);
 
+// Per point of m, whether its elements close around it (each side from it
+// shared by two elements); a point of no element does not
+std::vector<bool> closedRings(const surfaceMesh &m);
+
+// How many inner nodes of m (closedRings) have a valence other than 4
+std::size_t irregularNodes(const surfaceMesh &m);
+
 // Rotates edges between two quadrangles of m, pass after pass until none
 // is rotated or o.maxPasses are done, where the squared distance of the
 // four nodes' valences to their ideal (idealValences, computed before the
