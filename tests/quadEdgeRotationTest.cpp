@@ -108,3 +108,15 @@ TEST(quadEdgeRotation, noRotationMakesAPoorQuadrangle)
   const quadRotationResult r = rotateQuadEdges(m, {}, {}, o);
   EXPECT_EQ(r.rotations, 0u);
 }
+
+TEST(quadEdgeRotation, closedRingsAndIrregularNodes)
+{
+  const surfaceMesh grid = quadGrid(3);
+  const std::vector<bool> closed = closedRings(grid);
+  EXPECT_EQ(std::count(closed.begin(), closed.end(), true), 4); // inner
+  EXPECT_TRUE(closed[point(3, 1, 1)]);
+  EXPECT_FALSE(closed[point(3, 1, 0)]); // border
+  EXPECT_EQ(irregularNodes(grid), 0u);
+  // the rotated edge's ends of valence 3, the new one's of 5
+  EXPECT_EQ(irregularNodes(grid4WithARotatedEdge()), 4u);
+}
