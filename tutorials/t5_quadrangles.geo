@@ -14,8 +14,10 @@
 // CAD surface (Gmsh skips that on discrete surfaces, which had no map it
 // could trust), and the cross field is the smooth one (the closest boundary
 // point's direction follows the zig-zag of the cut curves). Then
-// Mesh.CompoundOptimize squares the quadrangles up on the input, moving the
-// nodes of the cut curves across them.
+// Mesh.CompoundOptimize rotates edges and collapses quadrangles along a
+// diagonal where that leaves fewer nodes of valence other than 4, then
+// squares the quadrangles up on the input, moving the nodes of the cut
+// curves across them.
 //
 // The log's "Reparam:" lines give eta min and mean per surface (Eq. 4 of
 // the paper: 1 for a square) and the "quadrangles squared up" line eta
