@@ -22,6 +22,7 @@
 #include "quadEdgeRotation.h"
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
+#include "quadSplit.h"
 #include "triangleMerge.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceMeshing.h"
@@ -438,6 +439,108 @@ namespace {
   // the quadrangle of a pair needs this eta, as the edge rotations' do
   const double mergeEta = 0.3;
 
+  // gf's elements as one mesh (triangles, then quadrangles) and the node
+  // of each point
+  surfaceMesh meshOfFace(GFace *gf, std::vector<MVertex *> &nodes)
+  {
+    surfaceMesh m;
+    std::map<MVertex *, int> index;
+    auto indexOf = [&](MVertex *v) {
+      auto it = index.emplace(v, (int)nodes.size()).first;
+      if(it->second == (int)nodes.size()) {
+        nodes.push_back(v);
+        m.points.push_back(v->point());
+      }
+      return it->second;
+    };
+    for(MTriangle *t : gf->triangles)
+      m.triangles.push_back(
+        {{indexOf(t->getVertex(0)), indexOf(t->getVertex(1)),
+          indexOf(t->getVertex(2))}});
+    for(MQuadrangle *q : gf->quadrangles)
+      m.quadrangles.push_back(
+        {{indexOf(q->getVertex(0)), indexOf(q->getVertex(1)),
+          indexOf(q->getVertex(2)), indexOf(q->getVertex(3))}});
+    return m;
+  }
+
+  // Whether most of m's quadrangles point against the input (Gmsh orients
+  // the face's elements once all are meshed, after this: the majority
+  // decides which way is right)
+  bool mostlyAgainst(const surfaceMesh &m, const surfaceMesh &input,
+                     const closestTriangleSearch &onInput)
+  {
+    std::size_t against = 0;
+    for(const std::array<int, 4> &q : m.quadrangles)
+      against += triangleAgainstInput(m.points[q[0]], m.points[q[1]],
+                                      m.points[q[2]], input, onInput);
+    return 2 * against > m.quadrangles.size();
+  }
+
+  // The quadrangles of gf below mergeEta split into two triangles
+  // (Mesh/quadSplit.h) of kappa mergeEta or more, where both point the
+  // way most of the face does; returns how many, their worst eta in
+  // `worst`
+  std::size_t splitQuadrangles(GFace *gf, double &worst)
+  {
+    if(gf->quadrangles.empty()) return 0;
+    std::vector<MVertex *> nodes;
+    const surfaceMesh m = meshOfFace(gf, nodes);
+    const std::vector<quadSplit> splits = quadSplits(m, mergeEta, mergeEta);
+    if(splits.empty()) return 0;
+    const surfaceMesh input = inputTriangulationOf(gf);
+    if(input.triangles.empty()) return 0;
+    const closestTriangleSearch onInput(input.points, input.triangles);
+    const bool side = mostlyAgainst(m, input, onInput);
+    std::vector<bool> gone(gf->quadrangles.size(), false);
+    std::size_t split = 0;
+    for(const quadSplit &s : splits) {
+      bool aside = false;
+      for(const std::array<int, 3> &t : s.triangles)
+        aside =
+          aside || triangleAgainstInput(m.points[t[0]], m.points[t[1]],
+                                        m.points[t[2]], input, onInput) != side;
+      if(aside) continue;
+      for(const std::array<int, 3> &t : s.triangles)
+        gf->triangles.push_back(
+          new MTriangle(nodes[t[0]], nodes[t[1]], nodes[t[2]]));
+      gone[s.quadrangle] = true;
+      worst = std::min(worst, s.eta);
+      split++;
+    }
+    std::vector<MQuadrangle *> kept;
+    for(std::size_t i = 0; i < gf->quadrangles.size(); i++)
+      if(gone[i])
+        delete gf->quadrangles[i];
+      else
+        kept.push_back(gf->quadrangles[i]);
+    gf->quadrangles.swap(kept);
+    return split;
+  }
+
+  // splitQuadrangles over the group's faces; logs and reports what changed
+  bool splitGroupQuadrangles(const cutGroup &g)
+  {
+    std::size_t split = 0;
+    double worst = 1.;
+    for(GFace *gf : g.faces) {
+      const std::size_t n = splitQuadrangles(gf, worst);
+      if(!n) continue;
+      split += n;
+      gf->deleteVertexArrays();
+      const faceReport *report = findFaceReport(gf);
+      reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
+      smoothedMeshes()[gf] = meshMark(gf);
+    }
+    if(split)
+      Msg::Info("Reparam: surface%s %s: %lu quadrangle%s of eta %.3g to %g "
+                "(a flat corner, most often on a curve) split into "
+                "triangles of kappa %g or more",
+                g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), split,
+                split > 1 ? "s" : "", worst, mergeEta, mergeEta);
+    return split > 0;
+  }
+
   // The triangles Blossom left in gf merged in pairs into quadrangles
   // (Mesh/triangleMerge.h) where the quadrangle's triangles along either
   // diagonal lie on the side of the input the pair was on; returns how
@@ -446,21 +549,7 @@ namespace {
   {
     if(gf->triangles.size() < 2) return 0;
     std::vector<MVertex *> nodes;
-    std::map<MVertex *, int> index;
-    surfaceMesh m;
-    for(MTriangle *t : gf->triangles) {
-      std::array<int, 3> c;
-      for(int k = 0; k < 3; k++) {
-        MVertex *v = t->getVertex(k);
-        auto it = index.emplace(v, (int)nodes.size()).first;
-        if(it->second == (int)nodes.size()) {
-          nodes.push_back(v);
-          m.points.push_back(v->point());
-        }
-        c[k] = it->second;
-      }
-      m.triangles.push_back(c);
-    }
+    const surfaceMesh m = meshOfFace(gf, nodes);
     cutGroup one;
     one.faces.push_back(gf);
     const std::vector<triangleMerge> merges =
@@ -536,6 +625,7 @@ int reparamSmoothQuadMeshes(GModel *m)
   for(const cutGroup &g : cutGroupsOf(m))
     if(!alreadySmoothed(g)) {
       changed += smoothGroup(g);
+      changed += splitGroupQuadrangles(g);
       changed += mergeGroupTriangles(g);
     }
   if(changed) m->destroyMeshCaches();
