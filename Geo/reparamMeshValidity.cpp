@@ -9,6 +9,8 @@
 #include "GFace.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
+#include "MEdge.h"
+#include "MElement.h"
 #include "MLine.h"
 #include "MTriangle.h"
 #include "MVertex.h"
@@ -152,10 +154,15 @@ namespace {
   // as it fails a triangle mesh, and MeshAdapt, remeshing the whole face,
   // crosses the same folds, slower and worse (camelhead's largest face: 8
   // elements against it after 25 s, eta mean 0.78; Frontal-Delaunay for
-  // quads kept: 0.1 s). The triangle repairs above do not apply to
-  // quadrangles
+  // quads kept: 0.1 s). Above 1 %, compared with the other meshers' for
+  // that face (Gmsh took MeshAdapt's blindly: gmsh2x_skull's face 18, 2 of
+  // Frontal-Delaunay for quads' elements against the input, 7 of
+  // MeshAdapt's, 1 of Delaunay's). The triangle repairs above do not apply
+  // to quadrangles
   bool keepQuadMesh(GFace *gf)
   {
+    // a mesh tried in place of another: compared there
+    if(reparamTryingOtherMesher()) return true;
     const surfaceMesh input = inputTriangulationOf(gf);
     if(input.triangles.empty()) return false;
     const std::size_t elements = gf->getNumMeshElements();
@@ -163,10 +170,12 @@ namespace {
     std::size_t against = countInverted(input, surfaceMeshOf(gf));
     against = std::min(against, elements - against);
     if(100 * against > elements) {
-      Msg::Debug("Reparam: surface %d: %lu of its %lu elements against the "
-                 "input",
-                 gf->tag(), against, elements);
-      return false;
+      // Delaunay's, the fastest, then MeshAdapt's (Gmsh's choice)
+      meshDefects defects;
+      defects.againstInput = against;
+      if(!reparamTryOtherMesher(gf, defects, ALGO_2D_DELAUNAY))
+        reparamTryOtherMesher(gf, defects, ALGO_2D_MESHADAPT);
+      return true;
     }
     if(against)
       Msg::Info("Reparam: surface %d: quadrangle mesh kept with %lu of its "
@@ -240,13 +249,16 @@ std::size_t countLongEdges(GFace *gf)
   };
   std::set<std::pair<MVertex *, MVertex *> > seen;
   std::size_t count = 0;
-  for(MTriangle *t : gf->triangles)
-    for(int k = 0; k < 3; k++) {
-      MVertex *a = t->getVertex(k), *b = t->getVertex((k + 1) % 3);
+  for(std::size_t e = 0; e < gf->getNumMeshElements(); e++) {
+    MElement *el = gf->getMeshElement(e);
+    for(int k = 0; k < el->getNumEdges(); k++) {
+      MVertex *a = el->getEdge(k).getVertex(0),
+              *b = el->getEdge(k).getVertex(1);
       if(!seen.insert(std::make_pair(std::min(a, b), std::max(a, b))).second)
         continue;
       count += a->distance(b) > (sizeAt(a) + sizeAt(b));
     }
+  }
   return count;
 }
 
@@ -265,11 +277,14 @@ std::size_t countUnusedCurveSegments(GFace *gf)
     for(MLine *l : b.first->lines)
       expected[key(l->getVertex(0), l->getVertex(1))] += b.second;
   std::map<segment, int> used;
-  for(MTriangle *t : gf->triangles)
-    for(int k = 0; k < 3; k++) {
-      auto it = expected.find(key(t->getVertex(k), t->getVertex((k + 1) % 3)));
+  for(std::size_t e = 0; e < gf->getNumMeshElements(); e++) {
+    MElement *el = gf->getMeshElement(e);
+    for(int k = 0; k < el->getNumEdges(); k++) {
+      const MEdge edge = el->getEdge(k);
+      auto it = expected.find(key(edge.getVertex(0), edge.getVertex(1)));
       if(it != expected.end()) used[it->first]++;
     }
+  }
   std::size_t unused = 0;
   for(const auto &e : expected) {
     auto it = used.find(e.first);

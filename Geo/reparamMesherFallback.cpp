@@ -4,6 +4,7 @@
 #include "GFace.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
+#include "MQuadrangle.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "meshFidelity.h"
@@ -21,6 +22,7 @@ namespace {
   // holds)
   struct detachedMesh {
     std::vector<MTriangle *> triangles;
+    std::vector<MQuadrangle *> quadrangles;
     std::vector<MVertex *> nodes;
   };
 
@@ -28,6 +30,7 @@ namespace {
   {
     detachedMesh m;
     m.triangles.swap(gf->triangles);
+    m.quadrangles.swap(gf->quadrangles);
     m.nodes.swap(gf->mesh_vertices);
     gf->deleteVertexArrays();
     return m;
@@ -36,6 +39,7 @@ namespace {
   void destroy(detachedMesh &m)
   {
     for(MTriangle *t : m.triangles) delete t;
+    for(MQuadrangle *q : m.quadrangles) delete q;
     for(MVertex *v : m.nodes) delete v;
     m = detachedMesh();
   }
@@ -45,6 +49,7 @@ namespace {
   {
     gf->deleteMesh();
     gf->triangles.swap(m.triangles);
+    gf->quadrangles.swap(m.quadrangles);
     gf->mesh_vertices.swap(m.nodes);
     gf->meshStatistics.status = GFace::DONE;
   }
@@ -59,16 +64,18 @@ namespace {
     }
   }
 
-  std::string defectsText(const meshDefects &d)
+  std::string defectsText(const meshDefects &d,
+                          const char *element = "triangle")
   {
     std::string text;
     if(d.unusedCurveSegments)
       text = std::to_string(d.unusedCurveSegments) +
              " segments of its curves unused, ";
     if(d.againstInput == (std::size_t)-1)
-      text += "triangles against the input not counted";
+      text += std::string(element) + "s against the input not counted";
     else
-      text += std::to_string(d.againstInput) + " triangles against the input";
+      text += std::to_string(d.againstInput) + " " + element +
+              (d.againstInput == 1 ? "" : "s") + " against the input";
     if(d.longEdges)
       text += ", " + std::to_string(d.longEdges) +
               " edges longer than twice the size";
@@ -82,15 +89,15 @@ bool reparamTryingOtherMesher() { return trying; }
 std::size_t countTrianglesAgainstInput(GFace *gf)
 {
   const optimizationRecord *o = findOptimization(gf);
-  if(o) return o->againstAfter;
+  if(o && gf->quadrangles.empty()) return o->againstAfter;
   const std::size_t raw =
     countInverted(inputTriangulationOf(gf), surfaceMeshOf(gf));
-  return std::min(raw, gf->triangles.size() - raw);
+  return std::min(raw, gf->getNumMeshElements() - raw);
 }
 
 bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
 {
-  if(!gf->quadrangles.empty()) return false;
+  const char *element = gf->quadrangles.empty() ? "triangle" : "element";
   int other = algorithm;
   if(!other)
     other = gf->getMeshingAlgo() == ALGO_2D_DELAUNAY ? ALGO_2D_FRONTAL :
@@ -106,16 +113,16 @@ bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
   found.unusedCurveSegments = countUnusedCurveSegments(gf);
   found.againstInput = countTrianglesAgainstInput(gf);
   found.longEdges = countLongEdges(gf);
-  if(!gf->triangles.empty() && found < current) {
+  if(gf->getNumMeshElements() && found < current) {
     destroy(kept);
     Msg::Info("Reparam: surface %d: remeshed with %s: %s -> %s", gf->tag(),
-              algorithmName(other), defectsText(current).c_str(),
-              defectsText(found).c_str());
+              algorithmName(other), defectsText(current, element).c_str(),
+              defectsText(found, element).c_str());
     return true;
   }
   forgetOptimization(gf);
   attach(gf, kept);
   Msg::Info("Reparam: surface %d: %s left %s: mesh kept", gf->tag(),
-            algorithmName(other), defectsText(found).c_str());
+            algorithmName(other), defectsText(found, element).c_str());
   return false;
 }

@@ -11,6 +11,7 @@
 // (a face of a noisy camelhead: 2 against the input, 8 with MeshAdapt).
 // A face the planar mesher left nearly empty (edges longer than twice the
 // size) is compared with MeshAdapt's mesh (Geo/reparamMeshValidity.h).
+// Quadrangle meshes too: the other mesher's is recombined the same way.
 
 #ifndef REPARAM_MESHER_FALLBACK_H
 #define REPARAM_MESHER_FALLBACK_H

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include "GFace.h"
 #include "GModel.h"
+#include "MQuadrangle.h"
 #include "MTriangle.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
@@ -65,6 +66,31 @@ TEST(reparamMesherFallback, theOtherMesherIsKeptOnlyWhenBetter)
   EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
   EXPECT_EQ(countTrianglesAgainstInput(gf), 0u);
   EXPECT_TRUE(freeMeshEdges().size() > 0u); // the square's sides only
+}
+
+TEST(reparamMesherFallback, quadrangleMeshesToo)
+{
+  gmsh::option::setNumber("Mesh.Algorithm", 8);
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  GFace *gf = meshedSquare();
+  ASSERT_TRUE(gf && !gf->quadrangles.empty());
+  // the quadrangles' sides count (they were not: every border segment of a
+  // recombined mesh unused)
+  EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
+  EXPECT_EQ(countLongEdges(gf), 0u);
+  const MQuadrangle *first = gf->quadrangles[0];
+  EXPECT_FALSE(reparamTryOtherMesher(gf, meshDefects()));
+  EXPECT_EQ(gf->quadrangles[0], first);
+  // told the current mesh has elements against the input: Delaunay's,
+  // recombined as well, replaces it
+  meshDefects against;
+  against.againstInput = 2;
+  EXPECT_TRUE(reparamTryOtherMesher(gf, against));
+  EXPECT_FALSE(gf->quadrangles.empty());
+  EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
+  EXPECT_EQ(countTrianglesAgainstInput(gf), 0u);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.RecombineAll", 0);
 }
 
 namespace {
