@@ -20,6 +20,7 @@
 #include "meshFidelity.h"
 #include "quadDiagonalCollapse.h"
 #include "quadEdgeRotation.h"
+#include "quadNodeSplit.h"
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
 #include "quadSplit.h"
@@ -134,6 +135,15 @@ namespace {
     return owner;
   }
 
+  // Moves v, an inner node of the group's face `owner`, to point p
+  void moveNode(const cutGroup &g, MVertex *v, int owner, const SPoint3 &p)
+  {
+    const SPoint2 uv = g.faces[owner]->parFromPoint(p);
+    v->setXYZ(p.x(), p.y(), p.z());
+    v->setParameter(0, uv.x());
+    v->setParameter(1, uv.y());
+  }
+
   // Collapses quadrangles along a diagonal where the mesh gets more
   // regular (Mesh/quadDiagonalCollapse.h): the merged nodes move, the
   // other node of each pair leaves its face (into `gone`, deleted by the
@@ -169,14 +179,9 @@ namespace {
         gone.push_back(nodes[i]);
       }
     }
-    for(std::size_t i = 0; i < nodes.size(); i++) {
-      if(!std::count(mergedInto.begin(), mergedInto.end(), (int)i)) continue;
-      const SPoint3 &p = m.points[i];
-      const SPoint2 uv = g.faces[owner[i]]->parFromPoint(p);
-      nodes[i]->setXYZ(p.x(), p.y(), p.z());
-      nodes[i]->setParameter(0, uv.x());
-      nodes[i]->setParameter(1, uv.y());
-    }
+    for(std::size_t i = 0; i < nodes.size(); i++)
+      if(std::count(mergedInto.begin(), mergedInto.end(), (int)i))
+        moveNode(g, nodes[i], owner[i], m.points[i]);
     std::set<MQuadrangle *> dropped;
     std::vector<std::array<int, 4> > keptCorners;
     std::vector<MQuadrangle *> keptQuads;
@@ -204,28 +209,69 @@ namespace {
     return r;
   }
 
-  // Edge rotations, then diagonal collapses and rotations again; writes the
-  // new corners to the quadrangles
-  quadRotationResult makeRegular(
-    const cutGroup &g, surfaceMesh &m, const std::vector<MVertex *> &nodes,
-    std::vector<MQuadrangle *> &quads, std::vector<int> &part,
-    const surfaceMesh &input, const closestTriangleSearch &onInput,
-    double worst, quadCollapseResult &collapsed, std::vector<MVertex *> &gone)
+  // Splits nodes where the mesh gets more regular (Mesh/quadNodeSplit.h):
+  // the first half of a node moves, the second is a new node of its face
+  // and the quadrangle between them a new element of it (nodes, quads and
+  // part grow)
+  quadNodeSplitResult
+  splitNodes(const cutGroup &g, surfaceMesh &m, std::vector<MVertex *> &nodes,
+             std::vector<MQuadrangle *> &quads, std::vector<int> &part,
+             const surfaceMesh &input, const closestTriangleSearch &onInput,
+             double worst)
+  {
+    std::vector<int> owner = ownersOf(g, nodes), splitFrom;
+    quadNodeSplitOptions o;
+    o.input = &input;
+    o.onInput = &onInput;
+    o.minEta = std::max(o.minEta, worst);
+    const std::size_t points = m.points.size(), elements = quads.size();
+    const quadNodeSplitResult r = splitQuadNodes(m, part, owner, splitFrom, o);
+    for(std::size_t i = points; i < m.points.size(); i++) {
+      const int v = splitFrom[i];
+      moveNode(g, nodes[v], owner[v], m.points[v]);
+      GFace *gf = g.faces[owner[i]];
+      MVertex *w = new MFaceVertex(m.points[i].x(), m.points[i].y(),
+                                   m.points[i].z(), gf, 0., 0.);
+      moveNode(g, w, owner[i], m.points[i]);
+      gf->mesh_vertices.push_back(w);
+      nodes.push_back(w);
+    }
+    for(std::size_t q = elements; q < m.quadrangles.size(); q++) {
+      const std::array<int, 4> &c = m.quadrangles[q];
+      MQuadrangle *e =
+        new MQuadrangle(nodes[c[0]], nodes[c[1]], nodes[c[2]], nodes[c[3]]);
+      g.faces[part[q]]->quadrangles.push_back(e);
+      quads.push_back(e);
+    }
+    return r;
+  }
+
+  // Edge rotations, then rounds of diagonal collapses, node splits and
+  // rotations again; writes the new corners to the quadrangles
+  quadRotationResult
+  makeRegular(const cutGroup &g, surfaceMesh &m, std::vector<MVertex *> &nodes,
+              std::vector<MQuadrangle *> &quads, std::vector<int> &part,
+              const surfaceMesh &input, const closestTriangleSearch &onInput,
+              double worst, quadCollapseResult &collapsed, std::size_t &splits,
+              std::vector<MVertex *> &gone)
   {
     quadRotationResult r = rotateEdges(g, m, nodes, part, input, onInput);
-    // a collapse can let an edge rotate, and a rotation bring two nodes of
-    // valence 3 across a quadrangle: a few rounds
+    // a collapse or a split can let an edge rotate, and a rotation bring
+    // two nodes of valence 3 across a quadrangle: a few rounds
     for(int round = 0; round < 4; round++) {
       const quadCollapseResult c =
         collapseDiagonals(g, m, nodes, quads, part, onInput, worst, gone);
       collapsed.collapses += c.collapses;
-      if(!c.collapses) break;
+      const quadNodeSplitResult s =
+        splitNodes(g, m, nodes, quads, part, input, onInput, worst);
+      splits += s.splits;
+      if(!c.collapses && !s.splits) break;
       const quadRotationResult again =
         rotateEdges(g, m, nodes, part, input, onInput);
       r.rotations += again.rotations;
       r.irregularAfter = again.irregularAfter;
     }
-    if(!r.rotations && !collapsed.collapses) return r;
+    if(!r.rotations && !collapsed.collapses && !splits) return r;
     for(std::size_t i = 0; i < quads.size(); i++)
       for(int k = 0; k < 4; k++)
         quads[i]->setVertex(k, nodes[m.quadrangles[i][k]]);
@@ -390,21 +436,22 @@ namespace {
     surfaceMesh m = meshOfGroup(g, nodes, quads, part);
     double etaMinBefore, etaMeanBefore;
     etaOfQuadrangles(m, etaMinBefore, etaMeanBefore);
+    quadCollapseResult collapsed;
+    std::size_t splits = 0;
+    std::vector<MVertex *> gone;
+    const quadRotationResult rotated =
+      makeRegular(g, m, nodes, quads, part, input, onInput, etaMinBefore,
+                  collapsed, splits, gone);
     const std::set<GFace *> faces(g.faces.begin(), g.faces.end());
     const std::set<GEdge *> cuts(g.cuts.begin(), g.cuts.end());
+    const std::set<MVertex *> goneSet(gone.begin(), gone.end());
     std::vector<bool> movable(nodes.size());
     for(std::size_t i = 0; i < nodes.size(); i++) {
       GEntity *e = nodes[i]->onWhat();
-      movable[i] = (e->dim() == 2 && faces.count((GFace *)e)) ||
-                   (e->dim() == 1 && cuts.count((GEdge *)e));
+      movable[i] = !goneSet.count(nodes[i]) &&
+                   ((e->dim() == 2 && faces.count((GFace *)e)) ||
+                    (e->dim() == 1 && cuts.count((GEdge *)e)));
     }
-    quadCollapseResult collapsed;
-    std::vector<MVertex *> gone;
-    const quadRotationResult rotated = makeRegular(
-      g, m, nodes, quads, part, input, onInput, etaMinBefore, collapsed, gone);
-    const std::set<MVertex *> goneSet(gone.begin(), gone.end());
-    for(std::size_t i = 0; i < nodes.size(); i++)
-      if(goneSet.count(nodes[i])) movable[i] = false;
     std::vector<std::unique_ptr<std::vector<SPoint3> > > polylines;
     std::vector<polylineSlide> slides = slidesOf(g, nodes, polylines);
     std::vector<double> slideFrom;
@@ -413,7 +460,8 @@ namespace {
     const quadSmoothingResult r =
       smoothQuadsOnInput(m, movable, onInput, landing, {}, &slides);
     for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
-    if(!r.moves && !rotated.rotations && !collapsed.collapses) return false;
+    if(!r.moves && !rotated.rotations && !collapsed.collapses && !splits)
+      return false;
     writeSlides(m, nodes, slides, slideFrom);
     const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
     for(MVertex *v : gone) delete v;
@@ -423,16 +471,16 @@ namespace {
       reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
     }
     Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
-              "(%lu edge rotations and %lu diagonal collapses, inner nodes "
-              "not of valence 4 %lu -> %lu; "
+              "(%lu edge rotations, %lu diagonal collapses and %lu node "
+              "splits, inner nodes not of valence 4 %lu -> %lu; "
               "%lu node moves in %d sweeps, %lu of them along curves, %lu "
               "of %lu cut curves crossed): eta min %.3g -> %.3g, mean %.3g "
               "-> %.3g (%g s)",
               g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(),
-              rotated.rotations, collapsed.collapses, rotated.irregularBefore,
-              rotated.irregularAfter, r.moves, r.sweeps, r.slides, crossed,
-              g.cuts.size(), etaMinBefore, r.etaMinAfter, etaMeanBefore,
-              r.etaMeanAfter, TimeOfDay() - t0);
+              rotated.rotations, collapsed.collapses, splits,
+              rotated.irregularBefore, rotated.irregularAfter, r.moves,
+              r.sweeps, r.slides, crossed, g.cuts.size(), etaMinBefore,
+              r.etaMinAfter, etaMeanBefore, r.etaMeanAfter, TimeOfDay() - t0);
     return true;
   }
 

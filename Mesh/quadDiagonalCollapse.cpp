@@ -9,19 +9,12 @@
 #include "meshFidelity.h"
 #include "quadDiagonalCollapse.h"
 #include "quadEdgeRotation.h"
+#include "quadFidelity.h"
 #include "quadQuality.h"
 
 namespace {
 
   typedef std::array<int, 4> quad;
-
-  SVector3 quadNormal(const quad &q, const std::vector<SPoint3> &p)
-  {
-    SVector3 n =
-      crossprod(SVector3(p[q[0]], p[q[2]]), SVector3(p[q[1]], p[q[3]]));
-    const double length = n.norm();
-    return length > 0. ? n * (1. / length) : n;
-  }
 
   // m's inner nodes not of valence 4, without the quadrangles removed
   std::size_t irregularCount(const surfaceMesh &m,
@@ -156,35 +149,17 @@ namespace {
       return worst;
     }
 
-    // How far p lies from the quadrangles `next` with a at x (each taken as
-    // the four triangles of its two diagonals)
-    double distanceTo(const SPoint3 &p, int a, const SPoint3 &x,
-                      const std::vector<std::pair<int, quad> > &next) const
+    // How far p lies from the quadrangles `next` with a at x (p a copy: it
+    // may be a's old place)
+    double distanceTo(const SPoint3 p, int a, const SPoint3 &x,
+                      const std::vector<std::pair<int, quad> > &next)
     {
-      double d = 1e300;
-      for(const auto &n : next) {
-        SPoint3 c[4];
-        for(int j = 0; j < 4; j++)
-          c[j] = n.second[j] == a ? x : m.points[n.second[j]];
-        for(int j = 0; j < 4; j++)
-          d = std::min(d, p.distance(closestPointOnTriangle(
-                            p, c[j], c[(j + 1) % 4], c[(j + 2) % 4])));
-      }
-      return d;
-    }
-
-    // The farthest from the input of the quadrangles' centres (the two
-    // diagonals' midpoints of each), with a at x
-    double farthestFromInput(int a, const SPoint3 &x,
-                             const std::vector<quad> &quads) const
-    {
-      double d = 0.;
-      for(const quad &Q : quads) {
-        SPoint3 c[4];
-        for(int j = 0; j < 4; j++) c[j] = Q[j] == a ? x : m.points[Q[j]];
-        for(int j = 0; j < 2; j++)
-          d = std::max(d, o.onInput->closest((c[j] + c[j + 2]) * 0.5).distance);
-      }
+      std::vector<quad> quads;
+      for(const auto &n : next) quads.push_back(n.second);
+      const SPoint3 old = m.points[a];
+      m.points[a] = x;
+      const double d = distanceToQuadrangles(p, quads, m.points);
+      m.points[a] = old;
       return d;
     }
 
@@ -193,7 +168,7 @@ namespace {
     // followed is not cut off
     bool followsInput(int q, int a, const SPoint3 &x,
                       const std::vector<std::pair<int, quad> > &next,
-                      double side) const
+                      double side)
     {
       if(!o.onInput) return true;
       std::vector<quad> before = {m.quadrangles[q]}, after;
@@ -201,8 +176,12 @@ namespace {
         before.push_back(m.quadrangles[n.first]);
         after.push_back(n.second);
       }
-      return farthestFromInput(a, x, after) <=
-             farthestFromInput(-1, x, before) + o.tolerance * side;
+      const double was = farthestCentreFromInput(before, m.points, *o.onInput);
+      const SPoint3 old = m.points[a];
+      m.points[a] = x;
+      const double now = farthestCentreFromInput(after, m.points, *o.onInput);
+      m.points[a] = old;
+      return now <= was + o.tolerance * side;
     }
 
     // What a collapse changed, to undo it

@@ -47,15 +47,6 @@ namespace {
     return std::atan2(crossprod(u, v).norm(), dot(u, v));
   }
 
-  SVector3 quadNormal(const std::array<int, 4> &q,
-                      const std::vector<SPoint3> &p)
-  {
-    SVector3 n =
-      crossprod(SVector3(p[q[0]], p[q[2]]), SVector3(p[q[1]], p[q[3]]));
-    const double length = n.norm();
-    return length > 0. ? n * (1. / length) : n;
-  }
-
   double etaOf(const std::array<int, 4> &q, const std::vector<SPoint3> &p)
   {
     return quadEta(p[q[0]], p[q[1]], p[q[2]], p[q[3]]);

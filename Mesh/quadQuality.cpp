@@ -23,6 +23,14 @@ double quadEta(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2,
   return std::max(1. - 2. / M_PI * worst, 0.);
 }
 
+SVector3 quadNormal(const std::array<int, 4> &q, const std::vector<SPoint3> &p)
+{
+  SVector3 n =
+    crossprod(SVector3(p[q[0]], p[q[2]]), SVector3(p[q[1]], p[q[3]]));
+  const double length = n.norm();
+  return length > 0. ? n * (1. / length) : n;
+}
+
 void etaOfQuadrangles(const surfaceMesh &m, double &worst, double &mean)
 {
   worst = 1.;
