@@ -14,8 +14,9 @@
 // CAD surface (Gmsh skips that on discrete surfaces, which had no map it
 // could trust), and the cross field is the smooth one (the closest boundary
 // point's direction follows the zig-zag of the cut curves). Then
-// Mesh.CompoundOptimize rotates edges and collapses quadrangles along a
-// diagonal where that leaves fewer nodes of valence other than 4, then
+// Mesh.CompoundOptimize rotates edges, collapses quadrangles along a
+// diagonal and splits nodes where that leaves fewer nodes of valence other
+// than 4, then
 // squares the quadrangles up on the input, moving the nodes of the cut
 // curves across them; a quadrangle left with a flat corner (three corners
 // along a bent curve) is split into two fair triangles.
