@@ -16,10 +16,9 @@
 // point's direction follows the zig-zag of the cut curves). Then
 // Mesh.CompoundOptimize rotates edges, collapses quadrangles along a
 // diagonal and splits nodes where that leaves fewer nodes of valence other
-// than 4, then
-// squares the quadrangles up on the input, moving the nodes of the cut
-// curves across them; a quadrangle left with a flat corner (three corners
-// along a bent curve) is split into two fair triangles.
+// than 4, then squares the quadrangles up on the input, moving the nodes of
+// the cut curves across them; a quadrangle left with a flat corner (three
+// corners along a bent curve) is split into two fair triangles.
 //
 // The log's "Reparam:" lines give eta min and mean per surface (Eq. 4 of
 // the paper: 1 for a square) and the "quadrangles squared up" line eta
