@@ -313,6 +313,28 @@ namespace {
     return list;
   }
 
+  // The elements of `elements` marked in `gone` deleted and taken out
+  template <class T>
+  void dropMarked(std::vector<T *> &elements, const std::vector<bool> &gone)
+  {
+    std::vector<T *> kept;
+    for(std::size_t i = 0; i < elements.size(); i++)
+      if(gone[i])
+        delete elements[i];
+      else
+        kept.push_back(elements[i]);
+    elements.swap(kept);
+  }
+
+  // gf's mesh changed: drawn and reported again, and marked as left so
+  void meshChanged(GFace *gf)
+  {
+    gf->deleteVertexArrays();
+    const faceReport *report = findFaceReport(gf);
+    reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
+    smoothedMeshes()[gf] = meshMark(gf);
+  }
+
   // Writes the moved points back: a face node goes to the face whose input
   // it landed on, a cut node moved off its cut is replaced by a new node of
   // that face (and the cut keeps no 1D element). Returns the cuts crossed
@@ -465,11 +487,7 @@ namespace {
     writeSlides(m, nodes, slides, slideFrom);
     const std::size_t crossed = writeBack(g, m, nodes, landing, inputFace);
     for(MVertex *v : gone) delete v;
-    for(GFace *gf : g.faces) {
-      gf->deleteVertexArrays();
-      const faceReport *report = findFaceReport(gf);
-      reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
-    }
+    for(GFace *gf : g.faces) meshChanged(gf);
     Msg::Info("Reparam: surface%s %s: quadrangles squared up on the input "
               "(%lu edge rotations, %lu diagonal collapses and %lu node "
               "splits, inner nodes not of valence 4 %lu -> %lu; "
@@ -556,13 +574,7 @@ namespace {
       worst = std::min(worst, s.eta);
       split++;
     }
-    std::vector<MQuadrangle *> kept;
-    for(std::size_t i = 0; i < gf->quadrangles.size(); i++)
-      if(gone[i])
-        delete gf->quadrangles[i];
-      else
-        kept.push_back(gf->quadrangles[i]);
-    gf->quadrangles.swap(kept);
+    dropMarked(gf->quadrangles, gone);
     return split;
   }
 
@@ -575,10 +587,7 @@ namespace {
       const std::size_t n = splitQuadrangles(gf, worst);
       if(!n) continue;
       split += n;
-      gf->deleteVertexArrays();
-      const faceReport *report = findFaceReport(gf);
-      reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
-      smoothedMeshes()[gf] = meshMark(gf);
+      meshChanged(gf);
     }
     if(split)
       Msg::Info("Reparam: surface%s %s: %lu quadrangle%s of eta %.3g to %g "
@@ -623,13 +632,7 @@ namespace {
       gone[t.first] = gone[t.second] = true;
       merged++;
     }
-    std::vector<MTriangle *> kept;
-    for(std::size_t i = 0; i < gf->triangles.size(); i++)
-      if(gone[i])
-        delete gf->triangles[i];
-      else
-        kept.push_back(gf->triangles[i]);
-    gf->triangles.swap(kept);
+    dropMarked(gf->triangles, gone);
     return merged;
   }
 
@@ -651,10 +654,7 @@ namespace {
       left += gf->triangles.size();
       pairs += merged;
       if(!merged) continue;
-      gf->deleteVertexArrays();
-      const faceReport *report = findFaceReport(gf);
-      reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
-      smoothedMeshes()[gf] = meshMark(gf);
+      meshChanged(gf);
     }
     if(pairs)
       Msg::Info("Reparam: surface%s %s: %lu pairs of the triangles Blossom "

@@ -8,6 +8,7 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "quadDiagonalCollapse.h"
+#include "quadConnectivity.h"
 #include "quadEdgeRotation.h"
 #include "quadFidelity.h"
 #include "quadQuality.h"
@@ -30,45 +31,19 @@ namespace {
 
   // The mesh's connectivity, kept exact through the collapses (and their
   // undoing, for the look-ahead)
-  struct collapser {
+  struct collapser : quadConnectivity {
     surfaceMesh &m;
     const std::vector<int> &part, &owner, &ideal;
     const std::vector<bool> &closed;
     std::vector<int> &mergedInto;
     std::vector<bool> &removed;
     const quadCollapseOptions &o;
-    std::vector<std::set<int> > neighbours;
-    std::vector<std::set<int> > quadsAt;
-    std::vector<bool> onTriangle;
-
-    void build()
-    {
-      neighbours.assign(m.points.size(), std::set<int>());
-      quadsAt.assign(m.points.size(), std::set<int>());
-      onTriangle.assign(m.points.size(), false);
-      for(const std::array<int, 3> &t : m.triangles)
-        for(int k = 0; k < 3; k++) {
-          onTriangle[t[k]] = true;
-          neighbours[t[k]].insert(t[(k + 1) % 3]);
-          neighbours[t[(k + 1) % 3]].insert(t[k]);
-        }
-      for(std::size_t i = 0; i < m.quadrangles.size(); i++) {
-        if(removed[i]) continue;
-        const quad &q = m.quadrangles[i];
-        for(int k = 0; k < 4; k++) {
-          quadsAt[q[k]].insert((int)i);
-          neighbours[q[k]].insert(q[(k + 1) % 4]);
-          neighbours[q[(k + 1) % 4]].insert(q[k]);
-        }
-      }
-    }
 
     int partOf(int q) const { return part.empty() ? 0 : part[q]; }
 
     double cost(int v, int change) const
     {
-      const double d = (double)neighbours[v].size() + change - ideal[v];
-      return d * d;
+      return quadConnectivity::cost(v, change, ideal);
     }
 
     // The change of the valences' squared distance to their ideal when q
@@ -349,8 +324,8 @@ quadCollapseResult collapseQuadDiagonals(surfaceMesh &m,
   const std::vector<int> ideal = idealValences(m);
   const std::vector<bool> closed = closedRings(m);
   r.irregularBefore = irregularCount(m, removed);
-  collapser pass{m, part, owner, ideal, closed, mergedInto, removed, o};
-  pass.build();
+  collapser pass{{}, m, part, owner, ideal, closed, mergedInto, removed, o};
+  pass.build(m, &removed);
   while(r.passes < o.maxPasses) {
     r.passes++;
     std::size_t collapses = pass.sweep();

@@ -10,6 +10,7 @@
 #include "closestTriangle.h"
 #include "inputNodesNear.h"
 #include "meshFidelity.h"
+#include "quadConnectivity.h"
 #include "quadEdgeRotation.h"
 #include "quadFidelity.h"
 #include "quadNodeSplit.h"
@@ -32,36 +33,13 @@ namespace {
   };
 
   // The mesh's connectivity, kept exact through the splits
-  struct splitter {
+  struct splitter : quadConnectivity {
     surfaceMesh &m;
     std::vector<int> &part, &owner, &splitFrom;
     std::vector<int> ideal;
     std::vector<bool> closed;
     const quadNodeSplitOptions &o;
-    std::vector<std::set<int> > neighbours, quadsAt;
-    std::vector<bool> onTriangle;
     std::unique_ptr<inputNodesNear> nearInput;
-
-    void build()
-    {
-      neighbours.assign(m.points.size(), std::set<int>());
-      quadsAt.assign(m.points.size(), std::set<int>());
-      onTriangle.assign(m.points.size(), false);
-      for(const std::array<int, 3> &t : m.triangles)
-        for(int k = 0; k < 3; k++) {
-          onTriangle[t[k]] = true;
-          neighbours[t[k]].insert(t[(k + 1) % 3]);
-          neighbours[t[(k + 1) % 3]].insert(t[k]);
-        }
-      for(std::size_t i = 0; i < m.quadrangles.size(); i++) {
-        const quad &q = m.quadrangles[i];
-        for(int k = 0; k < 4; k++) {
-          quadsAt[q[k]].insert((int)i);
-          neighbours[q[k]].insert(q[(k + 1) % 4]);
-          neighbours[q[(k + 1) % 4]].insert(q[k]);
-        }
-      }
-    }
 
     int partOf(int q) const { return part.empty() ? 0 : part[q]; }
 
@@ -94,8 +72,7 @@ namespace {
 
     double cost(int v, int change) const
     {
-      const double d = (double)neighbours[v].size() + change - ideal[v];
-      return d * d;
+      return quadConnectivity::cost(v, change, ideal);
     }
 
     // The change of the valences' squared distance to their ideal (4 for
@@ -331,8 +308,9 @@ quadNodeSplitResult splitQuadNodes(surfaceMesh &m, std::vector<int> &part,
   quadNodeSplitResult r;
   splitFrom.assign(m.points.size(), -1);
   r.irregularBefore = irregularNodes(m);
-  splitter pass{m, part, owner, splitFrom, idealValences(m), closedRings(m), o};
-  pass.build();
+  splitter pass{{}, m, part, owner, splitFrom, idealValences(m), closedRings(m),
+                o};
+  pass.build(m);
   if(o.input && o.onInput) pass.nearInput.reset(new inputNodesNear(*o.input));
   while(r.passes < o.maxPasses) {
     r.passes++;

@@ -34,16 +34,6 @@ namespace {
     return m;
   }
 
-  double signedArea(const surfaceMesh &m, const std::array<int, 4> &q)
-  {
-    double a = 0.;
-    for(int k = 0; k < 4; k++) {
-      const SPoint3 &p = m.points[q[k]], &r = m.points[q[(k + 1) % 4]];
-      a += p.x() * r.y() - r.x() * p.y();
-    }
-    return 0.5 * a;
-  }
-
   // The square [-2, 5]^2 as two triangles, its middle (1.5, 1.5) at height
   // `tip` (four triangles then)
   surfaceMesh inputUnder(double tip)
@@ -83,7 +73,7 @@ TEST(quadNodeSplit, aCollapsedDiagonalIsSplitBack)
   double worst, mean;
   etaOfQuadrangles(m, worst, mean);
   EXPECT_GE(worst, 0.3);
-  for(const auto &q : m.quadrangles) EXPECT_GT(signedArea(m, q), 0.);
+  for(const auto &q : m.quadrangles) EXPECT_GT(quadAreaXY(m, q), 0.);
   // the halves on the input, on either side of the merged node's place
   for(int v : {point(1, 1), (int)points})
     EXPECT_NEAR(m.points[v].z(), 0., 1e-12);

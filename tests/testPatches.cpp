@@ -279,6 +279,16 @@ surfaceMesh asSurfaceMesh(const testTriangulation &t)
   return m;
 }
 
+double quadAreaXY(const surfaceMesh &m, const std::array<int, 4> &q)
+{
+  double a = 0.;
+  for(int k = 0; k < 4; k++) {
+    const SPoint3 &p = m.points[q[k]], &r = m.points[q[(k + 1) % 4]];
+    a += p.x() * r.y() - r.x() * p.y();
+  }
+  return 0.5 * a;
+}
+
 surfaceMesh quadGrid(int n)
 {
   surfaceMesh m;

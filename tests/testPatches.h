@@ -86,6 +86,10 @@ surfaceMesh asSurfaceMesh(const testTriangulation &t);
 // i + n j
 surfaceMesh quadGrid(int n);
 
+// The signed area of quadrangle q of m in the (x, y) plane (positive
+// counterclockwise)
+double quadAreaXY(const surfaceMesh &m, const std::array<int, 4> &q);
+
 // Twice the signed area of triangle t in the uv plane (uv: 2 values per node)
 double uvArea2(const std::vector<double> &uv, const std::array<int, 3> &t);
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include "meshFidelity.h"
 #include "quadQuality.h"
+#include "testPatches.h"
 #include "triangleMerge.h"
 
 namespace {
@@ -21,16 +22,6 @@ namespace {
     return m;
   }
 
-  double signedArea(const surfaceMesh &m, const std::array<int, 4> &q)
-  {
-    double a = 0.;
-    for(int k = 0; k < 4; k++) {
-      const SPoint3 &p = m.points[q[k]], &r = m.points[q[(k + 1) % 4]];
-      a += p.x() * r.y() - r.x() * p.y();
-    }
-    return 0.5 * a;
-  }
-
 } // namespace
 
 TEST(triangleMerge, twoHalvesOfASquareMakeIt)
@@ -43,7 +34,7 @@ TEST(triangleMerge, twoHalvesOfASquareMakeIt)
   std::array<int, 4> sorted = merges[0].quadrangle;
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(sorted, (std::array<int, 4>{{0, 1, 2, 3}}));
-  EXPECT_NEAR(signedArea(m, merges[0].quadrangle), 1., 1e-12);
+  EXPECT_NEAR(quadAreaXY(m, merges[0].quadrangle), 1., 1e-12);
 }
 
 TEST(triangleMerge, lockedEdgesAndPoorQuadranglesAreLeft)
