@@ -34,8 +34,9 @@ struct meshDefects {
   }
 };
 
-// gf's triangles against its input, counted against the orientation most
-// of them have: the optimizer's count when it optimized the current mesh,
+// gf's elements (triangles, or quadrangles and the triangles Blossom
+// left) against its input, counted against the orientation most of them
+// have: the optimizer's count when it optimized the current triangle mesh,
 // else searched
 std::size_t countTrianglesAgainstInput(GFace *gf);
 

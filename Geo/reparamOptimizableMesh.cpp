@@ -6,6 +6,7 @@
 #include "GEdge.h"
 #include "GFace.h"
 #include "MLine.h"
+#include "MElement.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "closestTriangle.h"
@@ -83,14 +84,15 @@ bool reparamOptimizableFace(const GFace *gf)
 bool meshReversedOnInput(const GFace *gf, const surfaceMesh &input,
                          const closestTriangleSearch &onInput)
 {
-  const std::vector<MTriangle *> &triangles = gf->triangles;
-  const std::size_t step = triangles.size() / 101 + 1;
+  // a quadrangle by its first three corners
+  const std::size_t elements = gf->getNumMeshElements();
+  const std::size_t step = elements / 101 + 1;
   std::size_t against = 0, tested = 0;
-  for(std::size_t i = 0; i < triangles.size(); i += step, tested++) {
-    MTriangle *t = triangles[i];
+  for(std::size_t i = 0; i < elements; i += step, tested++) {
+    MElement *e = gf->getMeshElement(i);
     against +=
-      triangleAgainstInput(t->getVertex(0)->point(), t->getVertex(1)->point(),
-                           t->getVertex(2)->point(), input, onInput);
+      triangleAgainstInput(e->getVertex(0)->point(), e->getVertex(1)->point(),
+                           e->getVertex(2)->point(), input, onInput);
   }
   return 2 * against > tested;
 }

@@ -36,9 +36,10 @@ optimizableMesh optimizableMeshOf(
 // as its input
 bool reparamOptimizableFace(const GFace *gf);
 
-// Whether most triangles of gf's mesh turn against the input (searched by
-// onInput, built on it), counted on at most about a hundred of them: a
-// planar mesh is consistently oriented
+// Whether most elements of gf's mesh turn against the input (searched by
+// onInput, built on it; a quadrangle by its first three corners), counted
+// on at most about a hundred of them: a planar mesh is consistently
+// oriented
 bool meshReversedOnInput(const GFace *gf, const surfaceMesh &input,
                          const closestTriangleSearch &onInput);
 

@@ -27,6 +27,7 @@
 #include "triangleMerge.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceMeshing.h"
+#include "reparamOptimizableMesh.h"
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamReport.h"
 #include "reparamSmoothQuads.h"
@@ -530,19 +531,6 @@ namespace {
     return m;
   }
 
-  // Whether most of m's quadrangles point against the input (Gmsh orients
-  // the face's elements once all are meshed, after this: the majority
-  // decides which way is right)
-  bool mostlyAgainst(const surfaceMesh &m, const surfaceMesh &input,
-                     const closestTriangleSearch &onInput)
-  {
-    std::size_t against = 0;
-    for(const std::array<int, 4> &q : m.quadrangles)
-      against += triangleAgainstInput(m.points[q[0]], m.points[q[1]],
-                                      m.points[q[2]], input, onInput);
-    return 2 * against > m.quadrangles.size();
-  }
-
   // The quadrangles of gf below mergeEta split into two triangles
   // (Mesh/quadSplit.h) of kappa mergeEta or more, where both point the
   // way most of the face does; returns how many, their worst eta in
@@ -557,7 +545,9 @@ namespace {
     const surfaceMesh input = inputTriangulationOf(gf);
     if(input.triangles.empty()) return 0;
     const closestTriangleSearch onInput(input.points, input.triangles);
-    const bool side = mostlyAgainst(m, input, onInput);
+    // Gmsh orients the face's elements once all are meshed, after this:
+    // the way most of them point is the right one
+    const bool side = meshReversedOnInput(gf, input, onInput);
     std::vector<bool> gone(gf->quadrangles.size(), false);
     std::size_t split = 0;
     for(const quadSplit &s : splits) {
