@@ -29,6 +29,7 @@
 #include "reparamFaceMeshing.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeAcrossCuts.h"
+#include "reparamPinchedNodes.h"
 #include "reparamReport.h"
 #include "reparamSmoothQuads.h"
 
@@ -655,6 +656,19 @@ namespace {
     return pairs > 0;
   }
 
+  // The pinched nodes Gmsh's recombination left, removed first
+  // (Geo/reparamPinchedNodes.h): the group's moves take an element folded
+  // onto its neighbour as one to square up
+  bool removePinchedNodes(const cutGroup &g)
+  {
+    std::set<GFace *> changed;
+    if(!reparamRemovePinchedNodes(
+         g.faces, std::set<GEdge *>(g.cuts.begin(), g.cuts.end()), changed))
+      return false;
+    for(GFace *gf : changed) meshChanged(gf);
+    return true;
+  }
+
 } // namespace
 
 int reparamSmoothQuadMeshes(GModel *m)
@@ -662,6 +676,7 @@ int reparamSmoothQuadMeshes(GModel *m)
   int changed = 0;
   for(const cutGroup &g : cutGroupsOf(m))
     if(!alreadySmoothed(g)) {
+      changed += removePinchedNodes(g);
       changed += smoothGroup(g);
       changed += splitGroupQuadrangles(g);
       changed += mergeGroupTriangles(g);
