@@ -15,6 +15,7 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "reparamCurveMesh.h"
+#include "reparamFaceEdits.h"
 #include "reparamInputMesh.h"
 #include "reparamNoiseFaces.h"
 #include "reparamOptimizableMesh.h"
@@ -376,14 +377,6 @@ namespace {
     return against;
   }
 
-  std::string tagList(const std::vector<GFace *> &faces)
-  {
-    std::string list;
-    for(GFace *gf : faces)
-      list += (list.empty() ? "" : ", ") + std::to_string(gf->tag());
-    return list;
-  }
-
   // Whether this group's meshes are those the optimization left
   bool alreadyOptimized(const cutGroup &g)
   {
@@ -443,7 +436,7 @@ namespace {
     if(!r.flips && !r.moves && !r.inserted && !r.splits && !r.collapses &&
        !r.cavities) {
       Msg::Debug("Reparam: surfaces %s: nothing to change across their cuts",
-                 tagList(g.faces).c_str());
+                 reparamTagList(g.faces).c_str());
       return groupResult::unchanged;
     }
     const std::size_t against = againstRecorded(before, r.againstBefore);
@@ -451,8 +444,8 @@ namespace {
       Msg::Info("Reparam: surfaces %s: optimization across their curves "
                 "refused (kappa min %.3g -> %.3g, %lu -> %lu triangles "
                 "against the input)",
-                tagList(g.faces).c_str(), r.minBefore, r.minAfter, against,
-                r.againstAfter);
+                reparamTagList(g.faces).c_str(), r.minBefore, r.minAfter,
+                against, r.againstAfter);
       return groupResult::refused;
     }
     groupWriter writer(g, m, nodes, input, inputFace, onInput);
@@ -465,10 +458,11 @@ namespace {
               "mesh cut off inserted, %lu long edges split, %lu short ones "
               "collapsed, %lu tangles re-meshed, %lu flips and %lu node moves "
               "(%g s)",
-              tagList(g.faces).c_str(), g.cuts.size(), writer.crossedCurves(),
-              r.minBefore, r.minAfter, r.belowBefore, r.belowAfter, o.target,
-              r.againstBefore, r.againstAfter, r.inserted, r.splits,
-              r.collapses, r.cavities, r.flips, r.moves, seconds);
+              reparamTagList(g.faces).c_str(), g.cuts.size(),
+              writer.crossedCurves(), r.minBefore, r.minAfter, r.belowBefore,
+              r.belowAfter, o.target, r.againstBefore, r.againstAfter,
+              r.inserted, r.splits, r.collapses, r.cavities, r.flips, r.moves,
+              seconds);
     return groupResult::changed;
   }
 

@@ -12,6 +12,7 @@
 #include "meshFidelity.h"
 #include "pinchedNodes.h"
 #include "quadQuality.h"
+#include "reparamFaceEdits.h"
 #include "reparamPinchedNodes.h"
 
 namespace {
@@ -120,27 +121,6 @@ namespace {
     delete v;
   }
 
-  // The elements marked gone deleted and taken out of their face
-  template <class T>
-  void dropGone(std::vector<T *> &elements, const std::vector<bool> &gone)
-  {
-    std::vector<T *> kept;
-    for(std::size_t i = 0; i < elements.size(); i++)
-      if(gone[i])
-        delete elements[i];
-      else
-        kept.push_back(elements[i]);
-    elements.swap(kept);
-  }
-
-  std::string tagList(const std::vector<GFace *> &faces)
-  {
-    std::string list;
-    for(GFace *gf : faces)
-      list += (list.empty() ? "" : ", ") + std::to_string(gf->tag());
-    return list;
-  }
-
 } // namespace
 
 std::size_t reparamRemovePinchedNodes(const std::vector<GFace *> &faces,
@@ -177,8 +157,8 @@ std::size_t reparamRemovePinchedNodes(const std::vector<GFace *> &faces,
   }
   if(gone.empty()) return 0;
   for(GFace *gf : faces) {
-    dropGone(gf->triangles, trianglesGone[gf]);
-    dropGone(gf->quadrangles, quadranglesGone[gf]);
+    reparamDropMarked(gf->triangles, trianglesGone[gf]);
+    reparamDropMarked(gf->quadrangles, quadranglesGone[gf]);
   }
   for(auto &a : added) a.first->triangles.push_back(a.second);
   for(MVertex *v : gone) removeNode(v);
@@ -186,7 +166,7 @@ std::size_t reparamRemovePinchedNodes(const std::vector<GFace *> &faces,
   Msg::Info("Reparam: surface%s %s: %lu pinched node%s removed (two "
             "elements sharing both its edges, folded onto each other or "
             "lying on each other)",
-            faces.size() > 1 ? "s" : "", tagList(faces).c_str(), gone.size(),
-            gone.size() > 1 ? "s" : "");
+            faces.size() > 1 ? "s" : "", reparamTagList(faces).c_str(),
+            gone.size(), gone.size() > 1 ? "s" : "");
   return gone.size();
 }

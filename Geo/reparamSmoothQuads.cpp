@@ -26,6 +26,7 @@
 #include "quadSplit.h"
 #include "triangleMerge.h"
 #include "reparamCurveMesh.h"
+#include "reparamFaceEdits.h"
 #include "reparamFaceMeshing.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeAcrossCuts.h"
@@ -307,27 +308,6 @@ namespace {
     return true;
   }
 
-  std::string tagList(const std::vector<GFace *> &faces)
-  {
-    std::string list;
-    for(GFace *gf : faces)
-      list += (list.empty() ? "" : ", ") + std::to_string(gf->tag());
-    return list;
-  }
-
-  // The elements of `elements` marked in `gone` deleted and taken out
-  template <class T>
-  void dropMarked(std::vector<T *> &elements, const std::vector<bool> &gone)
-  {
-    std::vector<T *> kept;
-    for(std::size_t i = 0; i < elements.size(); i++)
-      if(gone[i])
-        delete elements[i];
-      else
-        kept.push_back(elements[i]);
-    elements.swap(kept);
-  }
-
   // gf's mesh changed: drawn and reported again, and marked as left so
   void meshChanged(GFace *gf)
   {
@@ -496,7 +476,7 @@ namespace {
               "%lu node moves in %d sweeps, %lu of them along curves, %lu "
               "of %lu cut curves crossed): eta min %.3g -> %.3g, mean %.3g "
               "-> %.3g (%g s)",
-              g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(),
+              g.faces.size() > 1 ? "s" : "", reparamTagList(g.faces).c_str(),
               rotated.rotations, collapsed.collapses, splits,
               rotated.irregularBefore, rotated.irregularAfter, r.moves,
               r.sweeps, r.slides, crossed, g.cuts.size(), etaMinBefore,
@@ -565,7 +545,7 @@ namespace {
       worst = std::min(worst, s.eta);
       split++;
     }
-    dropMarked(gf->quadrangles, gone);
+    reparamDropMarked(gf->quadrangles, gone);
     return split;
   }
 
@@ -584,8 +564,8 @@ namespace {
       Msg::Info("Reparam: surface%s %s: %lu quadrangle%s of eta %.3g to %g "
                 "(a flat corner, most often on a curve) split into "
                 "triangles of kappa %g or more",
-                g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), split,
-                split > 1 ? "s" : "", worst, mergeEta, mergeEta);
+                g.faces.size() > 1 ? "s" : "", reparamTagList(g.faces).c_str(),
+                split, split > 1 ? "s" : "", worst, mergeEta, mergeEta);
     return split > 0;
   }
 
@@ -623,7 +603,7 @@ namespace {
       gone[t.first] = gone[t.second] = true;
       merged++;
     }
-    dropMarked(gf->triangles, gone);
+    reparamDropMarked(gf->triangles, gone);
     return merged;
   }
 
@@ -651,8 +631,8 @@ namespace {
       Msg::Info("Reparam: surface%s %s: %lu pairs of the triangles Blossom "
                 "left merged into quadrangles of eta %.3g or more (%lu "
                 "triangles left)",
-                g.faces.size() > 1 ? "s" : "", tagList(g.faces).c_str(), pairs,
-                minEta, left);
+                g.faces.size() > 1 ? "s" : "", reparamTagList(g.faces).c_str(),
+                pairs, minEta, left);
     return pairs > 0;
   }
 

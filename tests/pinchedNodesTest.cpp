@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include "meshFidelity.h"
 #include "pinchedNodes.h"
+#include "testPatches.h"
 
 namespace {
 
@@ -19,20 +20,6 @@ namespace {
                 SPoint3(1., 1., 0.), SPoint3(1., -1., 0.)};
     m.triangles = {{{0, 2, 1}}, {{0, 4, 2}}};
     m.quadrangles = {{{2, 3, 0, 1}}};
-    return m;
-  }
-
-  // n x n quadrangles of the unit square's grid
-  surfaceMesh grid(int n)
-  {
-    surfaceMesh m;
-    for(int j = 0; j <= n; j++)
-      for(int i = 0; i <= n; i++) m.points.push_back(SPoint3(i, j, 0.));
-    for(int j = 0; j < n; j++)
-      for(int i = 0; i < n; i++) {
-        const int a = j * (n + 1) + i;
-        m.quadrangles.push_back({{a, a + 1, a + n + 2, a + n + 1}});
-      }
     return m;
   }
 
@@ -74,7 +61,7 @@ TEST(pinchedNodes, twoTrianglesOnEachOtherGo)
 TEST(pinchedNodes, aGridAndNodesThatMayNotGoStay)
 {
   // the grid's border nodes have two quadrangles of different edges there
-  const surfaceMesh g = grid(3);
+  const surfaceMesh g = quadGrid(3);
   EXPECT_TRUE(
     pinchedNodes(g, std::vector<bool>(g.points.size(), true)).empty());
   const surfaceMesh m = foldedEar();
