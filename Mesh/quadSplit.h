@@ -26,7 +26,8 @@ struct quadSplit {
 
 // The quadrangles of m of eta below maxEta, each split along the diagonal
 // whose worse triangle is the better, where both of those triangles reach
-// kappa minKappa and beat the quadrangle's eta; worst quadrangle first
+// kappa minKappa and beat the quadrangle's eta (0: better is enough);
+// worst quadrangle first
 std::vector<quadSplit> quadSplits(const surfaceMesh &m, double maxEta,
                                   double minKappa);
 

@@ -2,6 +2,8 @@
 // corner splits along the diagonal from that corner, a fair one or one whose
 // triangles are no better stays, the worst comes first
 
+#include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 #include "meshFidelity.h"
 #include "quadQuality.h"
@@ -91,4 +93,31 @@ TEST(quadSplit, theWorstFirst)
   ASSERT_EQ(splits.size(), 2u);
   EXPECT_EQ(splits[0].quadrangle, eta0 < eta1 ? 0 : 1);
   EXPECT_LE(splits[0].eta, splits[1].eta);
+}
+
+TEST(quadSplit, aSharpCornerSplitsIntoTrianglesBetterThanIt)
+{
+  // a corner of 13 degrees at (0, 0), as where two curves meet at a model
+  // point: no quadrangle there is fair, its triangles from the other
+  // diagonal are better than it though below 0.3
+  const double a = 13. * M_PI / 180.;
+  surfaceMesh m;
+  m.points = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.), SPoint3(1., 0.2, 0.),
+              SPoint3(0.6 * std::cos(a), 0.6 * std::sin(a), 0.)};
+  m.quadrangles = {{{0, 1, 2, 3}}};
+  const double eta =
+    quadEta(m.points[0], m.points[1], m.points[2], m.points[3]);
+  EXPECT_NEAR(eta, 0.046, 1e-3);
+  EXPECT_TRUE(quadSplits(m, 0.3, 0.3).empty());
+  const std::vector<quadSplit> splits = quadSplits(m, 0.3, 0.);
+  ASSERT_EQ(splits.size(), 1u);
+  // along the diagonal (1, 3): the corner's triangle (0, 1, 3) of kappa
+  // 0.137, the other 0.711
+  EXPECT_NEAR(splits[0].kappa, 0.137, 1e-3);
+  EXPECT_GT(splits[0].kappa, eta);
+  for(const std::array<int, 3> &t : splits[0].triangles) {
+    EXPECT_NE(std::find(t.begin(), t.end(), 1), t.end());
+    EXPECT_NE(std::find(t.begin(), t.end(), 3), t.end());
+    EXPECT_GT(signedArea(m, t), 0.);
+  }
 }
