@@ -32,6 +32,7 @@
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamPinchedNodes.h"
 #include "reparamReport.h"
+#include "reparamResplitAgainst.h"
 #include "reparamSmoothQuads.h"
 
 namespace {
@@ -653,6 +654,19 @@ namespace {
     return true;
   }
 
+  // Last, the elements left against the input split again with a
+  // neighbour (Geo/reparamResplitAgainst.h)
+  bool resplitGroupAgainst(const cutGroup &g)
+  {
+    bool changed = false;
+    for(GFace *gf : g.faces)
+      if(reparamResplitElementsAgainstInput(gf)) {
+        meshChanged(gf);
+        changed = true;
+      }
+    return changed;
+  }
+
 } // namespace
 
 int reparamSmoothQuadMeshes(GModel *m)
@@ -664,6 +678,7 @@ int reparamSmoothQuadMeshes(GModel *m)
       changed += smoothGroup(g);
       changed += splitGroupQuadrangles(g);
       changed += mergeGroupTriangles(g);
+      changed += resplitGroupAgainst(g);
     }
   if(changed) m->destroyMeshCaches();
   return changed;

@@ -161,6 +161,16 @@ bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
                            onInput, atCentroid);
 }
 
+bool quadrangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
+                            const SPoint3 &c, const SPoint3 &d,
+                            const surfaceMesh &input,
+                            const closestTriangleSearch &onInput)
+{
+  return cornersAgainst<4>({{a, b, c, d}},
+                           crossprod(SVector3(a, c), SVector3(b, d)), input,
+                           onInput, onInput.closest((a + b + c + d) * 0.25));
+}
+
 surfaceMesh surfaceMeshOf(const GFace *gf)
 {
   surfaceMesh m;

@@ -84,6 +84,13 @@ bool triangleAgainstInput(const SPoint3 &a, const SPoint3 &b, const SPoint3 &c,
                           const closestTriangleSearch &onInput,
                           const closestTriangleHit &atCentroid);
 
+// The same for the quadrangle (a, b, c, d), its normal its diagonals'
+// cross product
+bool quadrangleAgainstInput(const SPoint3 &a, const SPoint3 &b,
+                            const SPoint3 &c, const SPoint3 &d,
+                            const surfaceMesh &input,
+                            const closestTriangleSearch &onInput);
+
 // Only meshFidelity::inverted (N + 1 closest-triangle searches per element
 // of N corners)
 std::size_t countInverted(const surfaceMesh &input, const surfaceMesh &output);
