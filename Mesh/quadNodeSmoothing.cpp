@@ -62,6 +62,24 @@ namespace {
     return sum;
   }
 
+  // The element's edges' squared log-ratio to the size asked at their
+  // ends, summed and weighted (0 without sizes)
+  double offSize(const std::array<int, 4> &c, const std::vector<SPoint3> &p,
+                 const quadSmoothingOptions &o)
+  {
+    if(o.size.size() != p.size() || !(o.lengthWeight > 0.)) return 0.;
+    const int n = c[3] < 0 ? 3 : 4;
+    double sum = 0.;
+    for(int k = 0; k < n; k++) {
+      const int a = c[k], b = c[(k + 1) % n];
+      const double h = 0.5 * (o.size[a] + o.size[b]);
+      if(!(h > 0.)) continue;
+      const double r = std::log(p[a].distance(p[b]) / h);
+      sum += r * r;
+    }
+    return o.lengthWeight * sum;
+  }
+
   double distanceToElement(const SPoint3 &x, const std::array<int, 4> &c,
                            const std::vector<SPoint3> &p)
   {
@@ -242,7 +260,9 @@ namespace {
           s.min = -1.;
           return s;
         }
-        s.sum += _byEta ? q : -cornerDeviation(c, _m.points);
+        s.sum += _byEta ?
+                   q :
+                   -cornerDeviation(c, _m.points) - offSize(c, _m.points, _o);
         if(c[3] < 0)
           s.kappaMin = std::min(s.kappaMin, q);
         else

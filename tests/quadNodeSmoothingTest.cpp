@@ -198,3 +198,47 @@ TEST(quadNodeSmoothing, aNodeOnAPolylineCornerStays)
                      landing, {}, &slides);
   EXPECT_EQ(slides[2].t, 4.);
 }
+
+TEST(quadNodeSmoothing, withTheSizeAskedTheEdgesComeNearerToIt)
+{
+  // an 8 x 8 grid of unit cells in the plane, its inner nodes moved at
+  // random by up to 0.3 cells, smoothed by the angles alone and with the
+  // size 1 asked: the edges nearer to it (their log-ratios summed 13.8 ->
+  // 12.7), eta mean 0.014 lower (the angles and the lengths pull apart
+  // where the cells are uneven), its worst no lower
+  const int n = 8;
+  surfaceMesh start = quadGrid(n);
+  for(std::size_t i = 0; i < start.points.size(); i++) {
+    const int a = (int)i % (n + 1), b = (int)i / (n + 1);
+    if(a > 0 && a < n && b > 0 && b < n)
+      start.points[i] =
+        SPoint3(a + 0.3 * noise(i, 0), b + 0.3 * noise(i, 1), 0.);
+  }
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(64, 64, 8., 8.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  auto offSize = [](const surfaceMesh &x) {
+    double sum = 0.;
+    for(const auto &q : x.quadrangles)
+      for(int k = 0; k < 4; k++)
+        sum += std::fabs(
+          std::log(x.points[q[k]].distance(x.points[q[(k + 1) % 4]])));
+    return sum;
+  };
+  surfaceMesh alone = start, sized = start;
+  std::vector<int> landing;
+  const quadSmoothingResult a =
+    smoothQuadsOnInput(alone, innerNodes(n), onInput, landing);
+  quadSmoothingOptions o;
+  o.size.assign(start.points.size(), 1.);
+  const quadSmoothingResult s =
+    smoothQuadsOnInput(sized, innerNodes(n), onInput, landing, o);
+  EXPECT_LT(offSize(sized), 0.95 * offSize(alone));
+  EXPECT_GT(s.etaMeanAfter, a.etaMeanAfter - 0.02);
+  EXPECT_GE(s.etaMinAfter, s.etaMinBefore);
+  // sizes not one per point are none: the same moves as the angles alone
+  o.size.assign(3, 1.);
+  surfaceMesh none = start;
+  smoothQuadsOnInput(none, innerNodes(n), onInput, landing, o);
+  for(std::size_t i = 0; i < start.points.size(); i++)
+    EXPECT_EQ(none.points[i].distance(alone.points[i]), 0.) << i;
+}

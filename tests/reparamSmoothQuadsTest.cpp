@@ -126,9 +126,12 @@ TEST(smoothQuads, cutNodesMoveAcrossAndTheMeshStaysWhole)
   EXPECT_GT(after.quads, 0.95 * before.quads);
   EXPECT_EQ(after.freeEdges, 0u); // closed, manifold
   EXPECT_GE(after.crossedCuts, 1u);
-  EXPECT_GT(after.etaMin, before.etaMin + 0.05); // measured 0.490 -> 0.618
-  // 0.866 -> 0.885 (0.868 -> 0.881 without the collapses)
-  EXPECT_GT(after.etaMean, before.etaMean + 0.016);
+  // measured 0.490 -> 0.535 (0.618 by the angles alone, without the edges'
+  // ratio to the size in the node moves, Mesh/quadNodeSmoothing.h)
+  EXPECT_GT(after.etaMin, before.etaMin + 0.03);
+  // 0.866 -> 0.881 (0.885 by the angles alone; 0.868 -> 0.881 without the
+  // collapses)
+  EXPECT_GT(after.etaMean, before.etaMean + 0.012);
   // the nodes on the input: a polyhedron inside the unit sphere, no node
   // deeper than the input's facets (0.996)
   EXPECT_LT(after.farthestRadius, 1. + 1e-9);
