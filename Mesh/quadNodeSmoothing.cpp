@@ -307,6 +307,24 @@ namespace {
 
 } // namespace
 
+std::vector<double> meanQuadEdgeAtPoints(const surfaceMesh &m)
+{
+  std::vector<double> sum(m.points.size(), 0.);
+  std::vector<int> count(m.points.size(), 0);
+  for(const std::array<int, 4> &q : m.quadrangles)
+    for(int k = 0; k < 4; k++) {
+      const int a = q[k], b = q[(k + 1) % 4];
+      const double l = m.points[a].distance(m.points[b]);
+      sum[a] += l;
+      sum[b] += l;
+      count[a]++;
+      count[b]++;
+    }
+  for(std::size_t i = 0; i < sum.size(); i++)
+    if(count[i]) sum[i] /= count[i];
+  return sum;
+}
+
 quadSmoothingResult smoothQuadsOnInput(surfaceMesh &m,
                                        const std::vector<bool> &movable,
                                        const closestTriangleSearch &onInput,

@@ -17,8 +17,8 @@
 // right angle summed over the ring falls (a smooth measure, which
 // straightens a zig-zag row of nodes; raising eta summed, which only sees
 // each element's worst corner, flips it to the mirror zig-zag), with the
-// edges' squared log-ratio to the size asked (when given), in the second
-// half eta summed rises.
+// edges' squared log-ratio to the lengths given (their mean at each node),
+// in the second half eta summed rises.
 
 #ifndef QUAD_NODE_SMOOTHING_H
 #define QUAD_NODE_SMOOTHING_H
@@ -44,15 +44,16 @@ struct quadSmoothingOptions {
   double tolerance = 0.02;
   // no element turns by more than this (radians)
   double maxTurn = M_PI / 4.;
-  // per point, the size asked there (empty: none): in the first half of
-  // the sweeps each edge of the ring adds lengthWeight times its squared
-  // log-ratio to the mean of its ends' sizes to the corners' deviation.
-  // The angles alone let the rows of quadrangles drift off the size, which
-  // tau measures: with 0.25, tau +0.7 to 0.9 points on the smooth shared
-  // meshes (aneurysm 87.1 -> 88.0 %, tooth 89.9 -> 90.6 %), eta mean
-  // within 0.001; with 0.5, tau +0.3 more but a sphere's quadrangles (the
-  // test) eta min 0.535 -> 0.500, mean 0.881 -> 0.877; with 2, eta mean
-  // 0.005 lower on the shared meshes
+  // per point, the length its edges should have (empty: none): in the
+  // first half of the sweeps each edge of the ring adds lengthWeight times
+  // its squared log-ratio to the mean of its ends' lengths to the corners'
+  // deviation. The angles alone let the edges spread (aneurysm: 0.5 to 1.6
+  // of the size), which tau measures: with their mean at each node before
+  // the moves (meanQuadEdgeAtPoints) and 0.25, tau +0.6 to 0.9 points on
+  // the smooth shared meshes (aneurysm 87.1 -> 87.9 %, tooth 89.9 ->
+  // 90.6 %), eta mean within 0.001; with 0.5, tau +0.3 more but a
+  // sphere's quadrangles (the test) eta min 0.535 -> 0.500, mean 0.881 ->
+  // 0.877; with 2, eta mean 0.005 lower on the shared meshes
   std::vector<double> size;
   double lengthWeight = 0.25;
 };
@@ -75,6 +76,10 @@ struct quadSmoothingResult {
   std::size_t moves = 0, searches = 0, slides = 0;
   int sweeps = 0;
 };
+
+// Per point of m, the mean length of the quadrangles' edges at it (0 at a
+// point of none)
+std::vector<double> meanQuadEdgeAtPoints(const surfaceMesh &m);
 
 // Moves the points of m marked movable on the input triangulation
 // searched by onInput, sweep after sweep over the nodes whose ring changed,

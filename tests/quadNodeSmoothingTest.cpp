@@ -242,3 +242,20 @@ TEST(quadNodeSmoothing, withTheSizeAskedTheEdgesComeNearerToIt)
   for(std::size_t i = 0; i < start.points.size(); i++)
     EXPECT_EQ(none.points[i].distance(alone.points[i]), 0.) << i;
 }
+
+TEST(quadNodeSmoothing, meanEdgeAtEachPoint)
+{
+  // a 2 x 2 grid whose columns are 1 and 2 wide: a left corner's edges 1
+  // and 1, a right corner's 2 and 1, the centre's 1, 2 and twice 1 (each
+  // counted once per quadrangle: 10 / 8); a point of no quadrangle 0
+  surfaceMesh m = quadGrid(2);
+  for(SPoint3 &p : m.points)
+    p = SPoint3(p.x() < 1.5 ? p.x() : 3., p.y(), 0.);
+  m.points.push_back(SPoint3(9., 9., 0.));
+  const std::vector<double> mean = meanQuadEdgeAtPoints(m);
+  ASSERT_EQ(mean.size(), m.points.size());
+  EXPECT_NEAR(mean[0], 1., 1e-12);
+  EXPECT_NEAR(mean[2], 1.5, 1e-12);
+  EXPECT_NEAR(mean[4], 1.25, 1e-12);
+  EXPECT_EQ(mean[9], 0.);
+}
