@@ -49,8 +49,8 @@ struct quadSmoothingOptions {
   // its squared log-ratio to the mean of its ends' lengths to the corners'
   // deviation. The angles alone let the edges spread (aneurysm: 0.5 to 1.6
   // of the size), which tau measures: with their mean at each node before
-  // the moves (meanQuadEdgeAtPoints) and 0.25, tau +0.6 to 0.9 points on
-  // the smooth shared meshes (aneurysm 87.1 -> 87.9 %, tooth 89.9 ->
+  // the moves (meanQuadEdgeAtPoints) and 0.25, tau +0.4 to 0.7 points on
+  // the smooth shared meshes (aneurysm 87.2 -> 87.9 %, tooth 89.9 ->
   // 90.6 %), eta mean within 0.001; with 0.5, tau +0.3 more but a
   // sphere's quadrangles (the test) eta min 0.535 -> 0.500, mean 0.881 ->
   // 0.877; with 2, eta mean 0.005 lower on the shared meshes
