@@ -524,8 +524,8 @@ namespace {
   // the face does; returns how many, their worst eta in `worst` and the
   // worst of their triangles' kappa in `worstKappa`. Better is all it takes
   // (a floor of kappa 0.3 left armadillo's quadrangle of eta 0.108 at a
-  // 13-degree corner, whose triangles have kappa 0.129 and 0.729, and
-  // gmsh2x_skull's of 0.155, 0.276 and more)
+  // 13-degree corner where two curves meet, whose triangles have kappa
+  // 0.184 and more)
   std::size_t splitQuadrangles(GFace *gf, double &worst, double &worstKappa)
   {
     if(gf->quadrangles.empty()) return 0;
