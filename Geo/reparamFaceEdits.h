@@ -1,8 +1,9 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
 // What the steps that edit the faces' meshes after Mesh2D share (the
-// optimization across the cuts, the quadrangle steps, the pinched nodes):
-// the faces named in their log lines, elements taken out of a face.
+// optimization across the cuts, the quadrangle steps, the pinched nodes,
+// the elements split again): the faces named in their log lines, the
+// faces' elements as one indexed mesh, elements taken out of a face.
 
 #ifndef REPARAM_FACE_EDITS_H
 #define REPARAM_FACE_EDITS_H
@@ -11,9 +12,17 @@
 #include <vector>
 
 class GFace;
+class MVertex;
+struct surfaceMesh;
 
 // "2, 3, 5": the faces' tags, for a log line
 std::string reparamTagList(const std::vector<GFace *> &faces);
+
+// The faces' elements as one mesh: every face's triangles, then every
+// face's quadrangles, each face's in its own order; nodes[i] is point i's
+// node
+surfaceMesh reparamMeshOfFaces(const std::vector<GFace *> &faces,
+                               std::vector<MVertex *> &nodes);
 
 // The elements marked in `gone` deleted and taken out of `elements` (a
 // face's triangles or quadrangles), the others kept in their order

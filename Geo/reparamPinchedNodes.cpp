@@ -35,31 +35,13 @@ namespace {
   joinedMesh joinedMeshOf(const std::vector<GFace *> &faces)
   {
     joinedMesh j;
-    std::map<MVertex *, int> index;
-    auto indexOf = [&](MVertex *v) {
-      auto it = index.emplace(v, (int)j.nodes.size()).first;
-      if(it->second == (int)j.nodes.size()) {
-        j.nodes.push_back(v);
-        j.mesh.points.push_back(v->point());
-      }
-      return it->second;
-    };
+    j.mesh = reparamMeshOfFaces(faces, j.nodes);
     for(GFace *gf : faces)
-      for(std::size_t i = 0; i < gf->triangles.size(); i++) {
-        MTriangle *t = gf->triangles[i];
-        j.mesh.triangles.push_back(
-          {{indexOf(t->getVertex(0)), indexOf(t->getVertex(1)),
-            indexOf(t->getVertex(2))}});
+      for(std::size_t i = 0; i < gf->triangles.size(); i++)
         j.places.push_back({gf, false, i});
-      }
     for(GFace *gf : faces)
-      for(std::size_t i = 0; i < gf->quadrangles.size(); i++) {
-        MQuadrangle *q = gf->quadrangles[i];
-        j.mesh.quadrangles.push_back(
-          {{indexOf(q->getVertex(0)), indexOf(q->getVertex(1)),
-            indexOf(q->getVertex(2)), indexOf(q->getVertex(3))}});
+      for(std::size_t i = 0; i < gf->quadrangles.size(); i++)
         j.places.push_back({gf, true, i});
-      }
     return j;
   }
 

@@ -31,23 +31,12 @@ namespace {
   faceElements elementsOf(GFace *gf)
   {
     faceElements f;
-    std::map<MVertex *, int> index;
-    auto add = [&](MElement *e) {
-      std::vector<int> c;
-      for(std::size_t k = 0; k < e->getNumVertices(); k++) {
-        MVertex *v = e->getVertex(k);
-        auto it = index.emplace(v, (int)f.nodes.size()).first;
-        if(it->second == (int)f.nodes.size()) {
-          f.nodes.push_back(v);
-          f.points.push_back(v->point());
-        }
-        c.push_back(it->second);
-      }
-      f.corners.push_back(c);
-    };
-    for(MTriangle *t : gf->triangles) add(t);
-    f.triangles = gf->triangles.size();
-    for(MQuadrangle *q : gf->quadrangles) add(q);
+    const surfaceMesh m = reparamMeshOfFaces({gf}, f.nodes);
+    f.points = m.points;
+    for(const auto &t : m.triangles) f.corners.push_back({t.begin(), t.end()});
+    for(const auto &q : m.quadrangles)
+      f.corners.push_back({q.begin(), q.end()});
+    f.triangles = m.triangles.size();
     return f;
   }
 

@@ -494,31 +494,6 @@ namespace {
   // the quadrangle of a pair needs this eta, as the edge rotations' do
   const double mergeEta = 0.3;
 
-  // gf's elements as one mesh (triangles, then quadrangles) and the node
-  // of each point
-  surfaceMesh meshOfFace(GFace *gf, std::vector<MVertex *> &nodes)
-  {
-    surfaceMesh m;
-    std::map<MVertex *, int> index;
-    auto indexOf = [&](MVertex *v) {
-      auto it = index.emplace(v, (int)nodes.size()).first;
-      if(it->second == (int)nodes.size()) {
-        nodes.push_back(v);
-        m.points.push_back(v->point());
-      }
-      return it->second;
-    };
-    for(MTriangle *t : gf->triangles)
-      m.triangles.push_back(
-        {{indexOf(t->getVertex(0)), indexOf(t->getVertex(1)),
-          indexOf(t->getVertex(2))}});
-    for(MQuadrangle *q : gf->quadrangles)
-      m.quadrangles.push_back(
-        {{indexOf(q->getVertex(0)), indexOf(q->getVertex(1)),
-          indexOf(q->getVertex(2)), indexOf(q->getVertex(3))}});
-    return m;
-  }
-
   // The quadrangles of gf below mergeEta split into two triangles
   // (Mesh/quadSplit.h) better than them, where both point the way most of
   // the face does; returns how many, their worst eta in `worst` and the
@@ -530,7 +505,7 @@ namespace {
   {
     if(gf->quadrangles.empty()) return 0;
     std::vector<MVertex *> nodes;
-    const surfaceMesh m = meshOfFace(gf, nodes);
+    const surfaceMesh m = reparamMeshOfFaces({gf}, nodes);
     const std::vector<quadSplit> splits = quadSplits(m, mergeEta, 0.);
     if(splits.empty()) return 0;
     const surfaceMesh input = inputTriangulationOf(gf);
@@ -588,7 +563,7 @@ namespace {
   {
     if(gf->triangles.size() < 2) return 0;
     std::vector<MVertex *> nodes;
-    const surfaceMesh m = meshOfFace(gf, nodes);
+    const surfaceMesh m = reparamMeshOfFaces({gf}, nodes);
     cutGroup one;
     one.faces.push_back(gf);
     const std::vector<triangleMerge> merges =
