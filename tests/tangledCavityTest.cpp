@@ -163,3 +163,28 @@ TEST(tangledCavity, aDartWithItsDiagonalOutsideIsRetriangulated)
   for(const auto &e : edgeUses(m)) border += e.second == 1;
   EXPECT_EQ(border, 4u);
 }
+
+TEST(tangledCavity, aCavityOnlySliversCouldFillIsLeft)
+{
+  // the dart again, its reflex corner 0.01 below its tip: any mesh of it,
+  // fan or triangulation, has a triangle of kappa about 0.003 (sides of 2.2
+  // and 0.01 apart); no better than the fold, it stays for the other repairs
+  const surfaceMesh input = asSurfaceMesh(rectangleGrid(10, 10, 2., 2.));
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  optimizableMesh m;
+  m.points = {SPoint3(0., 0., 0.), SPoint3(1., 1.99, 0.), SPoint3(2., 0., 0.),
+              SPoint3(1., 2., 0.)};
+  m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+  m.size.assign(4, 1.);
+  m.movable.assign(4, false);
+  m.landing.assign(4, -1);
+  m.inputNode.assign(4, -1);
+  m.origin = {0, 1, 2, 3};
+  m.triangleOrigin = {0, 1};
+  m.against = againstFlags(m, input, onInput);
+  ASSERT_TRUE(m.against[0]);
+  EXPECT_LT(triangleKappa(m.points[0], m.points[1], m.points[3]), 0.01);
+  EXPECT_EQ(remeshTangledCavities(m, input, onInput, false), 0u);
+  EXPECT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.points.size(), 4u);
+}
