@@ -274,10 +274,10 @@ bool keptAsInput(const GFace *gf)
          f->getNumMeshElements() && f->getMeshElement(0) == it->second.first;
 }
 
-bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
+bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
+                                 const std::string &reason)
 {
-  if(!against || gf->stl_triangles.empty() || !gf->quadrangles.empty())
-    return false;
+  if(gf->stl_triangles.empty() || !gf->quadrangles.empty()) return false;
   const surfaceMesh in = inputTriangulationOf(gf);
   inputTriangulation input;
   input.points = in.points;
@@ -302,11 +302,19 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
     inputMeshedFaces()[gf] = {gf->getNumMeshElements(), gf->getMeshElement(0)};
   }
   Msg::Warning("Reparam: surface %d meshed with its %lu input triangles, "
-               "stitched to its curves: its planar mesh kept %lu triangles "
-               "against the input (a fold of the input, or a strip narrower "
-               "than the mesh size)",
-               gf->tag(), input.triangles.size(), against);
+               "stitched to its curves: %s",
+               gf->tag(), input.triangles.size(), reason.c_str());
   return true;
+}
+
+bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
+{
+  if(!against) return false;
+  return reparamMeshFaceWithItsInput(
+    gf, against,
+    "its planar mesh kept " + std::to_string(against) +
+      " triangles against the input (a fold of the input, or a strip "
+      "narrower than the mesh size)");
 }
 
 bool reparamMeshFromInput(GFace *gf)

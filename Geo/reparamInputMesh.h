@@ -39,8 +39,9 @@ GFace *reparamTakeFaceInCreation();
 // then reports its error
 bool reparamKeepInputMesh(GFace *gf);
 
-// Called by discreteFace::mesh: meshes a face kept above with its input triangles,
-// stitched to the nodes of its curves' 1D meshes; false for other faces
+// Called by discreteFace::mesh: meshes a face kept above with its input
+// triangles, stitched to the nodes of its curves' 1D meshes; false for other
+// faces
 bool reparamMeshFromInput(GFace *gf);
 
 // Called when gf's planar mesh keeps `against` triangles pointing against
@@ -48,6 +49,10 @@ bool reparamMeshFromInput(GFace *gf);
 // stitched to its curves' nodes, with one warning, if that leaves no more
 // against the input (and turns none in the stitching); false otherwise
 bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against);
+// The same for any `reason` (the warning's end), if that leaves no more
+// than `against` triangles against the input
+bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
+                                 const std::string &reason);
 
 // The faces of m meshed with their input triangles
 std::vector<int> facesKeptAsInput(GModel *m);

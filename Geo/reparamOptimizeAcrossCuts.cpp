@@ -21,6 +21,7 @@
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamOptions.h"
+#include "reparamOverlappingFaces.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
 #include "reparamSlideCurveNodes.h"
@@ -521,6 +522,8 @@ std::vector<cutGroup> facesJoinedByCuts(GModel *m,
 int reparamOptimizeMeshedModel(GModel *m)
 {
   reparamRestoreRefusedSurfaces(m);
+  if(getReparamOptions().parametrization != (int)compoundParametrization::gmsh)
+    reparamSeparateOverlappingFaces(m);
   if(!getReparamOptions().optimize ||
      getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;

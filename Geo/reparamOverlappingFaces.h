@@ -1,0 +1,41 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Faces meshed onto each other. A part of the input thinner than the mesh
+// size between two faces of the layout (a speck of a few voxels floating
+// in a CT segmentation, a pin of a CAD part 0.4 mm wide at the size 1.5
+// mm) has its curves' nodes on both sides and none inside: both faces are
+// meshed with the same triangles, the part collapses into a double sheet
+// whose edges four triangles share, and nothing told the user
+// (adis16480: 160 such edges; a noisy segmentation: 3). One of the two
+// faces is then meshed with its input triangles stitched to its curves
+// (Geo/reparamInputMesh.h, with its warning), which reopens the part as
+// the input has it; where that cannot be done, one warning names both
+// faces.
+
+#ifndef REPARAM_OVERLAPPING_FACES_H
+#define REPARAM_OVERLAPPING_FACES_H
+
+#include <cstddef>
+#include <vector>
+
+class GFace;
+class GModel;
+
+struct overlappingFaces {
+  GFace *first, *second; // first->tag() < second->tag()
+  // edges inside both (two triangles of each) and triangles of both
+  std::size_t overlaps;
+};
+
+// The pairs of faces of m meshed over each other: an edge inside one of
+// them is inside the other too (not along the input's own edges of more
+// than two triangles: where three faces meet along a curve, a fin stands
+// on a face, or two faces touch), or a triangle of one is the other's
+std::vector<overlappingFaces> facesMeshedOntoEachOther(GModel *m);
+
+// Meshes one face of each such pair (the one of fewer input triangles
+// first) with its input triangles where that turns none against the
+// input; warns about the pairs left. Returns the faces re-meshed.
+std::size_t reparamSeparateOverlappingFaces(GModel *m);
+
+#endif
