@@ -519,47 +519,63 @@ std::vector<cutGroup> facesJoinedByCuts(GModel *m,
     crossable);
 }
 
+namespace {
+
+  // The optimizations once every face is meshed (Mesh.CompoundOptimize)
+  int optimizeMeshedModel(GModel *m)
+  {
+    int changed = 0;
+    const std::set<GEdge *> noise = reparamNoiseFaceCurves(m);
+    // the groups by the layout's cuts alone, for the refused ones (the faces
+    // and curves are the same before and after any group is optimized)
+    std::vector<cutGroup> byCuts;
+    bool grouped = false;
+    for(const cutGroup &g : facesJoinedByCuts(m, noise)) {
+      if(alreadyOptimized(g)) continue;
+      bool crossesNoise = false;
+      for(GEdge *ge : g.cuts) crossesNoise = crossesNoise || noise.count(ge);
+      if(!crossesNoise) {
+        changed += optimizeGroup(g, false) == groupResult::changed;
+        continue;
+      }
+      // across the curves of a noise face, only on top of the groups by the
+      // cuts alone, and only if the worst triangle gains and no more
+      // triangles point against the input (gmsh2x_pelvis_tlem2: a noise
+      // face's curves joined to a group of cut parts took its kappa min
+      // 0.028 -> 0.004, or to 0.042 with other flips before, 0.48 without
+      // them)
+      if(!grouped) {
+        byCuts = facesJoinedByCuts(m, {});
+        grouped = true;
+      }
+      std::set<GFace *> members(g.faces.begin(), g.faces.end());
+      for(const cutGroup &part : byCuts)
+        if(members.count(part.faces[0]) && !alreadyOptimized(part) &&
+           optimizeGroup(part, false) == groupResult::changed)
+          changed++;
+      changed += optimizeGroup(g, true) == groupResult::changed;
+    }
+    // then the nodes of the curves no optimizer moved
+    if(reparamSlideCurveNodes(m)) changed++;
+    // and the faces recombined into quadrangles
+    changed += reparamSmoothQuadMeshes(m);
+    return changed;
+  }
+
+} // namespace
+
 int reparamOptimizeMeshedModel(GModel *m)
 {
   reparamRestoreRefusedSurfaces(m);
-  if(getReparamOptions().parametrization != (int)compoundParametrization::gmsh)
-    reparamSeparateOverlappingFaces(m);
-  if(!getReparamOptions().optimize ||
-     getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+  if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;
-  int changed = 0;
-  const std::set<GEdge *> noise = reparamNoiseFaceCurves(m);
-  // the groups by the layout's cuts alone, for the refused ones (the faces
-  // and curves are the same before and after any group is optimized)
-  std::vector<cutGroup> byCuts;
-  bool grouped = false;
-  for(const cutGroup &g : facesJoinedByCuts(m, noise)) {
-    if(alreadyOptimized(g)) continue;
-    bool crossesNoise = false;
-    for(GEdge *ge : g.cuts) crossesNoise = crossesNoise || noise.count(ge);
-    if(!crossesNoise) {
-      changed += optimizeGroup(g, false) == groupResult::changed;
-      continue;
-    }
-    // across the curves of a noise face, only on top of the groups by the
-    // cuts alone, and only if the worst triangle gains and no more
-    // triangles point against the input (gmsh2x_pelvis_tlem2: a noise
-    // face's curves joined to a group of cut parts took its kappa min 0.028
-    // -> 0.004, or to 0.042 with other flips before, 0.48 without them)
-    if(!grouped) {
-      byCuts = facesJoinedByCuts(m, {});
-      grouped = true;
-    }
-    std::set<GFace *> members(g.faces.begin(), g.faces.end());
-    for(const cutGroup &part : byCuts)
-      if(members.count(part.faces[0]) && !alreadyOptimized(part) &&
-         optimizeGroup(part, false) == groupResult::changed)
-        changed++;
-    changed += optimizeGroup(g, true) == groupResult::changed;
-  }
-  // then the nodes of the curves no optimizer moved
-  if(reparamSlideCurveNodes(m)) changed++;
-  // and the faces recombined into quadrangles
-  changed += reparamSmoothQuadMeshes(m);
+  // before the optimizations, with the curves' nodes where the 1D mesh put
+  // them (their slides may leave a face's input no longer stitchable:
+  // pelvis_tlem2, a pocket of two input triangles a side), and on the mesh
+  // as it stays (an optimization across the cuts may part two faces, or
+  // meet them), warning then of the pairs left
+  int changed = (int)reparamSeparateOverlappingFaces(m, false);
+  if(getReparamOptions().optimize) changed += optimizeMeshedModel(m);
+  changed += (int)reparamSeparateOverlappingFaces(m, true);
   return changed;
 }

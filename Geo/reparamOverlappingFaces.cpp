@@ -181,30 +181,52 @@ std::vector<overlappingFaces> facesMeshedOntoEachOther(GModel *m)
   return pairs;
 }
 
-std::size_t reparamSeparateOverlappingFaces(GModel *m)
+namespace {
+
+  bool stillOverlap(GModel *m, const overlappingFaces &p)
+  {
+    for(const overlappingFaces &q : facesMeshedOntoEachOther(m))
+      if(q.first == p.first && q.second == p.second) return true;
+    return false;
+  }
+
+  // One face of p (the one of fewer input triangles first, not one kept
+  // as its input already) meshed with its input triangles, if that parts
+  // them
+  bool separate(GModel *m, const overlappingFaces &p)
+  {
+    GFace *order[2] = {p.first, p.second};
+    if(p.second->stl_triangles.size() < p.first->stl_triangles.size())
+      std::swap(order[0], order[1]);
+    for(int k = 0; k < 2; k++)
+      if(!keptAsInput(order[k]) &&
+         meshedWithInput(order[k], order[1 - k], p.overlaps) &&
+         !stillOverlap(m, p))
+        return true;
+    return false;
+  }
+
+} // namespace
+
+std::size_t reparamSeparateOverlappingFaces(GModel *m, bool warn)
 {
   std::size_t remeshed = 0;
   std::set<GFace *> done;
   for(const overlappingFaces &p : facesMeshedOntoEachOther(m)) {
     if(done.count(p.first) || done.count(p.second)) continue;
-    GFace *order[2] = {p.first, p.second};
-    if(p.second->stl_triangles.size() < p.first->stl_triangles.size())
-      std::swap(order[0], order[1]);
-    bool separated = false;
-    for(int k = 0; k < 2 && !separated; k++)
-      separated = meshedWithInput(order[k], order[1 - k], p.overlaps);
-    if(separated) {
+    if(separate(m, p)) {
       done.insert(p.first);
       done.insert(p.second);
       remeshed++;
       continue;
     }
-    Msg::Warning("Reparam: surfaces %d and %d meshed onto each other (%lu "
-                 "edges inside both or triangles of both): "
-                 "a part thinner than the mesh size; sizes below its "
-                 "thickness (Mesh.MeshSizeMin, Mesh.MeshSizeFromCurvature) "
-                 "separate them",
-                 p.first->tag(), p.second->tag(), p.overlaps);
+    if(warn)
+      Msg::Warning("Reparam: surfaces %d and %d meshed onto each other (%lu "
+                   "edges inside both or triangles of both): "
+                   "a part thinner than the mesh size; sizes below its "
+                   "thickness (Mesh.MeshSizeMin, Mesh.MeshSizeFromCurvature) "
+                   "separate them",
+                   p.first->tag(), p.second->tag(), p.overlaps);
   }
   return remeshed;
 }

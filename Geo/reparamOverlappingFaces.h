@@ -35,7 +35,8 @@ std::vector<overlappingFaces> facesMeshedOntoEachOther(GModel *m);
 
 // Meshes one face of each such pair (the one of fewer input triangles
 // first) with its input triangles where that turns none against the
-// input; warns about the pairs left. Returns the faces re-meshed.
-std::size_t reparamSeparateOverlappingFaces(GModel *m);
+// input; with `warn`, warns about the pairs left. Returns the faces
+// re-meshed.
+std::size_t reparamSeparateOverlappingFaces(GModel *m, bool warn = true);
 
 #endif

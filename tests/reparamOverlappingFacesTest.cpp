@@ -38,8 +38,8 @@ namespace {
 
   // The input of a face: the square's corners and a fifth point at height
   // `apex` over its centre (none: 0), as a fan (or two triangles across
-  // the diagonal 0-2), turned up or down
-  void setInput(GFace *gf, double apex, bool up)
+  // the diagonal 0-2, or with `otherDiagonal` 1-3), turned up or down
+  void setInput(GFace *gf, double apex, bool up, bool otherDiagonal = false)
   {
     gf->stl_vertices_xyz = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.),
                             SPoint3(1., 1., 0.), SPoint3(0., 1., 0.)};
@@ -48,6 +48,8 @@ namespace {
       gf->stl_vertices_xyz.push_back(SPoint3(0.5, 0.5, apex));
       t = {{{0, 1, 4}}, {{1, 2, 4}}, {{2, 3, 4}}, {{3, 0, 4}}};
     }
+    else if(otherDiagonal)
+      t = {{{0, 1, 3}}, {{1, 2, 3}}};
     else
       t = {{{0, 1, 2}}, {{0, 2, 3}}};
     gf->stl_triangles.clear();
@@ -149,4 +151,25 @@ TEST(reparamOverlappingFaces, facesSideBySideDoNotOverlap)
   gmsh::model::mesh::addElementsByType(1, 2, {}, {1, 2, 3, 1, 3, 4});
   gmsh::model::mesh::addElementsByType(2, 2, {}, {1, 5, 2, 1, 6, 5});
   EXPECT_TRUE(facesMeshedOntoEachOther(GModel::current()).empty());
+}
+
+TEST(reparamOverlappingFaces, theOtherFaceIsTriedWhenTheFirstStaysOnIt)
+{
+  // above's input is its mesh (two triangles across the diagonal 1-3): as
+  // its input it still shares that diagonal with below; below's input,
+  // across the other diagonal, parts them
+  flatPillowModel();
+  GModel *m = GModel::current();
+  GFace *above = m->getFaceByTag(1), *below = m->getFaceByTag(2);
+  setInput(above, 0., true);
+  setInput(below, 0., false, true);
+  ASSERT_EQ(facesMeshedOntoEachOther(m).size(), 1u);
+  EXPECT_EQ(reparamSeparateOverlappingFaces(m), 1u);
+  EXPECT_TRUE(facesMeshedOntoEachOther(m).empty());
+  EXPECT_TRUE(keptAsInput(below));
+  // and nothing is left to do
+  const std::size_t triangles =
+    above->triangles.size() + below->triangles.size();
+  EXPECT_EQ(reparamSeparateOverlappingFaces(m), 0u);
+  EXPECT_EQ(above->triangles.size() + below->triangles.size(), triangles);
 }
