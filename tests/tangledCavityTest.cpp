@@ -64,6 +64,38 @@ namespace {
     return uses;
   }
 
+  // A dart of four fixed nodes, (0, 0), (1, reflex), (2, 0) and (1, 2),
+  // meshed across its diagonal 0-2: for 0 < reflex < 2 the second one is a
+  // reflex corner, the diagonal runs outside and triangle (0, 1, 2) turns
+  // over
+  optimizableMesh dart(double reflex)
+  {
+    optimizableMesh m;
+    m.points = {SPoint3(0., 0., 0.), SPoint3(1., reflex, 0.),
+                SPoint3(2., 0., 0.), SPoint3(1., 2., 0.)};
+    m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    m.size.assign(4, 1.);
+    m.movable.assign(4, false);
+    m.landing.assign(4, -1);
+    m.inputNode.assign(4, -1);
+    m.origin = {0, 1, 2, 3};
+    m.triangleOrigin = {0, 1};
+    return m;
+  }
+
+  // The dart on a 2 x 2 grid input, its triangles marked against it
+  class tangledDart : public ::testing::Test {
+  protected:
+    const surfaceMesh input = asSurfaceMesh(rectangleGrid(10, 10, 2., 2.));
+    const closestTriangleSearch onInput{input.points, input.triangles};
+    optimizableMesh m;
+    void make(double reflex)
+    {
+      m = dart(reflex);
+      m.against = againstFlags(m, input, onInput);
+    }
+  };
+
 } // namespace
 
 TEST(tangledCavity, crossedNodesAreRemeshedAsAFan)
@@ -130,23 +162,9 @@ TEST(tangledCavity, fixedCornersAloneAreLeft)
   EXPECT_EQ(m.triangles.size(), triangles);
 }
 
-TEST(tangledCavity, aDartWithItsDiagonalOutsideIsRetriangulated)
+TEST_F(tangledDart, aDartWithItsDiagonalOutsideIsRetriangulated)
 {
-  // four fixed nodes, the second one a reflex corner; the diagonal 0-2 runs
-  // outside, so that triangle (0, 1, 2) turns over
-  const surfaceMesh input = asSurfaceMesh(rectangleGrid(10, 10, 2., 2.));
-  const closestTriangleSearch onInput(input.points, input.triangles);
-  optimizableMesh m;
-  m.points = {SPoint3(0., 0., 0.), SPoint3(1., 0.6, 0.), SPoint3(2., 0., 0.),
-              SPoint3(1., 2., 0.)};
-  m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-  m.size.assign(4, 1.);
-  m.movable.assign(4, false);
-  m.landing.assign(4, -1);
-  m.inputNode.assign(4, -1);
-  m.origin = {0, 1, 2, 3};
-  m.triangleOrigin = {0, 1};
-  m.against = againstFlags(m, input, onInput);
+  make(0.6);
   ASSERT_TRUE(m.against[0]);
   ASSERT_FALSE(m.against[1]);
   EXPECT_EQ(remeshTangledCavities(m, input, onInput, false), 1u);
@@ -164,24 +182,12 @@ TEST(tangledCavity, aDartWithItsDiagonalOutsideIsRetriangulated)
   EXPECT_EQ(border, 4u);
 }
 
-TEST(tangledCavity, aCavityOnlySliversCouldFillIsLeft)
+TEST_F(tangledDart, aCavityOnlySliversCouldFillIsLeft)
 {
-  // the dart again, its reflex corner 0.01 below its tip: any mesh of it,
-  // fan or triangulation, has a triangle of kappa about 0.003 (sides of 2.2
-  // and 0.01 apart); no better than the fold, it stays for the other repairs
-  const surfaceMesh input = asSurfaceMesh(rectangleGrid(10, 10, 2., 2.));
-  const closestTriangleSearch onInput(input.points, input.triangles);
-  optimizableMesh m;
-  m.points = {SPoint3(0., 0., 0.), SPoint3(1., 1.99, 0.), SPoint3(2., 0., 0.),
-              SPoint3(1., 2., 0.)};
-  m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-  m.size.assign(4, 1.);
-  m.movable.assign(4, false);
-  m.landing.assign(4, -1);
-  m.inputNode.assign(4, -1);
-  m.origin = {0, 1, 2, 3};
-  m.triangleOrigin = {0, 1};
-  m.against = againstFlags(m, input, onInput);
+  // its reflex corner 0.01 below its tip: any mesh of it, fan or
+  // triangulation, has a triangle of kappa about 0.003 (sides of 2.2 and
+  // 0.01 apart); no better than the fold, it stays for the other repairs
+  make(1.99);
   ASSERT_TRUE(m.against[0]);
   EXPECT_LT(triangleKappa(m.points[0], m.points[1], m.points[3]), 0.01);
   EXPECT_EQ(remeshTangledCavities(m, input, onInput, false), 0u);
