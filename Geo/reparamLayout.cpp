@@ -8,6 +8,7 @@
 // classification builds exactly these patches as discrete surfaces.
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <set>
@@ -161,12 +162,68 @@ layoutParameters reparamLayoutParameters(const layoutMesh &mesh)
   return p;
 }
 
+namespace {
+
+  // The part's points and its triangles' indices into them
+  void pointsOfPart(const std::vector<MTriangle *> &triangles,
+                    std::vector<SPoint3> &xyz, std::vector<int> &nodes)
+  {
+    std::unordered_map<MVertex *, int> index;
+    for(MTriangle *t : triangles)
+      for(int k = 0; k < 3; k++) {
+        MVertex *v = t->getVertex(k);
+        auto it = index.insert(std::make_pair(v, (int)xyz.size()));
+        if(it.second) xyz.push_back(v->point());
+        nodes.push_back(it.first->second);
+      }
+  }
+
+  // Parts failsBeforeTheMap refused in the current layout (its threads)
+  std::atomic<std::size_t> refusedBeforeTheMap(0);
+
+  // The tests a part fails whatever its map, before the map (a solve of
+  // seconds on a part of 100k triangles, on a scan of a million only to
+  // cut it: 40 s of the layout of a vessel's 964k triangles)
+  bool failsBeforeTheMap(const std::vector<MTriangle *> &triangles,
+                         partCheck &check)
+  {
+    if(getReparamOptions().parametrization ==
+       (int)compoundParametrization::gmsh)
+      return false;
+    std::vector<SPoint3> xyz;
+    std::vector<int> nodes;
+    pointsOfPart(triangles, xyz, nodes);
+    // A patch much larger than its boundary (a sock: a tube closed at one
+    // end): the planar mesher starts from the boundary nodes and measures
+    // edges by their chords, so it leaves the patch nearly empty
+    // (gmsh2x_falcon1: a face of 3 triangles, 17 % of the diagonal from the
+    // input)
+    const double largeness = boundaryLargeness(xyz, nodes);
+    char s[128];
+    if(largeness > reparamMaxLargeness) {
+      snprintf(s, sizeof(s),
+               "it is %.3g times larger than the disk its boundary bounds",
+               largeness);
+      check.reason = s;
+    }
+    else if(!reparamHolesFillable(triangles))
+      check.reason = "a hole of it cannot be filled on its mean plane";
+    else
+      return false;
+    check.ok = false;
+    refusedBeforeTheMap++;
+    return true;
+  }
+
+} // namespace
+
 partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
 {
   std::vector<SPoint2> uv;
   std::vector<SPoint3> xyz;
   std::vector<int> nodes;
   partCheck check;
+  if(failsBeforeTheMap(triangles, check)) return check;
   int done = reparamTryParametrization(triangles, uv, xyz, nodes, check.reason);
   if(done <= 0) {
     check.ok = false;
@@ -176,24 +233,10 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
   // the planar mesher then works at the limit of its precision (aorta as one
   // face: parts meshed far too coarsely, 12 % Hausdorff distance)
   double crowding = mapCrowding(uv, xyz, nodes);
-  char s[128];
   if(crowding < reparamMinCrowding) {
     check.ok = false;
+    char s[128];
     snprintf(s, sizeof(s), "its map crowds it (area ratio %.2g)", crowding);
-    check.reason = s;
-    return check;
-  }
-  // A patch much larger than its boundary (a sock: a tube closed at one
-  // end): the planar mesher starts from the boundary nodes and measures
-  // edges by their chords, so it leaves the patch nearly empty
-  // (gmsh2x_falcon1: a face of 3 triangles, 17 % of the diagonal from the
-  // input)
-  double largeness = boundaryLargeness(xyz, nodes);
-  if(largeness > reparamMaxLargeness) {
-    check.ok = false;
-    snprintf(s, sizeof(s),
-             "it is %.3g times larger than the disk its boundary bounds",
-             largeness);
     check.reason = s;
   }
   return check;
@@ -301,6 +344,7 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
       t[i] = model.triangles[part[i]];
     return reparamVerifyPart(t);
   };
+  refusedBeforeTheMap = 0;
   layoutResult layout = computePatchLayout(model.mesh, parameters, verify);
 
   // The cuts of the layout as lines: Gmsh's classification then grows
@@ -322,14 +366,15 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   Msg::Info(
     "Reparam: layout of %lu triangles: %d feature patches, %d noise "
     "patches merged (size %g), %d splits, %d patches (clean %.3g s, "
-    "split and verify %.3g s%s, total %.3g s)",
+    "split and verify %.3g s%s, %lu parts refused before their map, total "
+    "%.3g s)",
     model.triangles.size(), layout.featurePatches, layout.mergedNoise,
     8. * parameters.noiseWidth, (int)layout.splits.size(), layout.numPatches,
     layout.cleanTime, layout.splitTime,
     parameters.threads > 1 ?
       (" on " + std::to_string(parameters.threads) + " threads").c_str() :
       "",
-    TimeOfDay() - t0);
+    refusedBeforeTheMap.load(), TimeOfDay() - t0);
   for(const auto &u : layout.unverified)
     // CreateGeometry then keeps its input triangles, with a warning naming
     // the surface

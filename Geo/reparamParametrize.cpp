@@ -218,6 +218,49 @@ namespace {
     return result;
   }
 
+  // The patch of Gmsh's triangles: nodes numbered in order of first
+  // appearance, as Gmsh's own code does (nodes, points, tris), then sorted
+  // by their Gmsh numbers (canonical) for the maps: the same triangles
+  // given in another order (the patch layout verifies a part, CreateGeometry
+  // later gets it in the order of Gmsh's flood fill) then get the same (u,
+  // v), flips and folds to the last bit
+  reparamError patchOfTriangles(const std::vector<MTriangle *> &triangles,
+                                std::vector<MVertex *> &nodes,
+                                std::vector<SPoint3> &points,
+                                std::vector<std::array<int, 3> > &tris,
+                                std::vector<int> &canonical,
+                                discretePatch &patch)
+  {
+    std::unordered_map<MVertex *, int> nodeIndex;
+    nodeIndex.reserve(triangles.size());
+    tris.resize(triangles.size());
+    for(std::size_t t = 0; t < triangles.size(); t++) {
+      for(int j = 0; j < 3; j++) {
+        MVertex *v = triangles[t]->getVertex(j);
+        auto it = nodeIndex.insert(std::make_pair(v, (int)nodes.size()));
+        if(it.second) {
+          nodes.push_back(v);
+          points.push_back(v->point());
+        }
+        tris[t][j] = it.first->second;
+      }
+    }
+    canonical = canonicalNodeOrder(nodes);
+    return makeDiscretePatch(permutedPoints(points, canonical),
+                             canonicalTriangles(triangles, tris, canonical),
+                             patch);
+  }
+
+  // The patch and the triangles filling its holes as one patch
+  reparamError extendedPatch(const discretePatch &patch,
+                             const holeFilling &filling,
+                             discretePatch &extended)
+  {
+    std::vector<std::array<int, 3> > all = patch.triangles;
+    all.insert(all.end(), filling.triangles.begin(), filling.triangles.end());
+    return makeDiscretePatch(patch.points, std::move(all), extended);
+  }
+
 } // namespace
 
 void reparamForgetLayoutMaps()
@@ -250,39 +293,18 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
   if(triangles.empty()) return -1;
 
   double t0 = TimeOfDay();
-  // Nodes numbered in order of first appearance, as Gmsh's own code does, so
-  // that both give the same node order
-  std::unordered_map<MVertex *, int> nodeIndex;
-  nodeIndex.reserve(triangles.size());
   std::vector<SPoint3> points;
-  std::vector<std::array<int, 3> > tris(triangles.size());
-  for(std::size_t t = 0; t < triangles.size(); t++) {
-    for(int j = 0; j < 3; j++) {
-      MVertex *v = triangles[t]->getVertex(j);
-      auto it = nodeIndex.insert(std::make_pair(v, (int)nodes.size()));
-      if(it.second) {
-        nodes.push_back(v);
-        points.push_back(v->point());
-      }
-      tris[t][j] = it.first->second;
-    }
-  }
+  std::vector<std::array<int, 3> > tris;
+  std::vector<int> canonical;
+  discretePatch patch;
+  reparamError err =
+    patchOfTriangles(triangles, nodes, points, tris, canonical, patch);
   // Gmsh's callers read the outputs whatever the result (the patch check of
   // ClassifySurfaces indexes the (u, v) by the triangles): they stay empty
   // unless the map succeeds
   std::vector<int> triangleNodes(3 * tris.size());
   for(std::size_t t = 0; t < tris.size(); t++)
     for(int j = 0; j < 3; j++) triangleNodes[3 * t + j] = tris[t][j];
-
-  // The maps work on the nodes and triangles sorted by their Gmsh numbers:
-  // the same triangles given in another order (the patch layout verifies a
-  // part, CreateGeometry later gets it in the order of Gmsh's flood fill)
-  // then get the same (u, v), flips and folds to the last bit
-  std::vector<int> canonical = canonicalNodeOrder(nodes);
-  discretePatch patch;
-  reparamError err =
-    makeDiscretePatch(permutedPoints(points, canonical),
-                      canonicalTriangles(triangles, tris, canonical), patch);
   double t1 = TimeOfDay();
   if(!err.ok()) {
     std::string where;
@@ -320,10 +342,7 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                    triangles.size(), filling.skippedHoles,
                    patch.boundaryLoops.size() - 1);
     if(!filling.triangles.empty()) {
-      std::vector<std::array<int, 3> > all = patch.triangles;
-      all.insert(all.end(), filling.triangles.begin(), filling.triangles.end());
-      reparamError fillErr =
-        makeDiscretePatch(patch.points, std::move(all), extended);
+      const reparamError fillErr = extendedPatch(patch, filling, extended);
       if(fillErr.ok()) {
         mapped = &extended;
         filledHoles = filling.filledHoles;
@@ -540,3 +559,21 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
 }
 
 std::string reparamLastFailure() { return lastFailure; }
+
+bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
+{
+  if(!getReparamOptions().fillHoles) return true;
+  std::vector<MVertex *> nodes;
+  std::vector<SPoint3> points;
+  std::vector<std::array<int, 3> > tris;
+  std::vector<int> canonical;
+  discretePatch patch;
+  // an invalid patch is the maps' failure to tell
+  if(!patchOfTriangles(triangles, nodes, points, tris, canonical, patch).ok() ||
+     patch.boundaryLoops.size() < 2)
+    return true;
+  const holeFilling filling = fillHoles(patch);
+  discretePatch extended;
+  return !filling.skippedHoles && !filling.triangles.empty() &&
+         extendedPatch(patch, filling, extended).ok();
+}

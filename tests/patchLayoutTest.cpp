@@ -13,6 +13,7 @@
 #include "gmshTestEnvironment.h"
 #include "patchLayout.h"
 #include "reparamLayout.h"
+#include "reparamParametrize.h"
 #include "triangleAdjacency.h"
 
 namespace {
@@ -457,4 +458,35 @@ TEST(patchLayout, holesTouchingAtANodeStillTouchInTheMesh)
     if(std::hypot(p[0] - 1. / 3., p[1] - 1. / 3.) < 1e-12) atPinch = n.second;
   }
   EXPECT_EQ(atPinch, 4);
+}
+
+namespace {
+
+  partCheck verified(const testTriangulation &t)
+  {
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+    gmshTriangulation g(t);
+    return reparamVerifyPart(g.triangles);
+  }
+
+} // namespace
+
+TEST(patchLayout, partsFailingWhateverTheirMapFailBeforeIt)
+{
+  // a sock, much larger than the disk its boundary bounds: refused with
+  // that reason, whatever its map
+  partCheck c = verified(sphericalCap(20, 32, 0.9 * M_PI));
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.reason.find("times larger than the disk its boundary bounds"),
+            std::string::npos);
+  // a disk with a hole filled on its mean plane passes, and its map
+  const testTriangulation holed = polarDiskWithHoles(8, 32, {{{3, 5, 4, 10}}});
+  {
+    gmshTriangulation g(holed);
+    EXPECT_TRUE(reparamHolesFillable(g.triangles));
+  }
+  EXPECT_TRUE(verified(holed).ok);
+  // as without holes
+  gmshTriangulation disk(polarDisk(6, 24));
+  EXPECT_TRUE(reparamHolesFillable(disk.triangles));
 }
