@@ -14,6 +14,8 @@
 #include "edgeByCoordinates.h"
 #include "reparamInputMesh.h"
 #include "reparamOverlappingFaces.h"
+#include "reparamReport.h"
+#include "triangleQuality.h"
 
 namespace {
 
@@ -67,12 +69,18 @@ namespace {
 
   bool meshedWithInput(GFace *gf, GFace *other, std::size_t overlaps)
   {
-    return reparamMeshFaceWithItsInput(
-      gf, 0,
-      "its mesh lay on surface " + std::to_string(other->tag()) + "'s (" +
-        std::to_string(overlaps) +
-        " edges inside both or triangles of both: a part thinner than the "
-        "mesh size)");
+    if(!reparamMeshFaceWithItsInput(
+         gf, 0,
+         "its mesh lay on surface " + std::to_string(other->tag()) + "'s (" +
+           std::to_string(overlaps) +
+           " edges inside both or triangles of both: a part thinner than the "
+           "mesh size)"))
+      return false;
+    // the report's record of the face made again for its new mesh (the
+    // faces are all meshed: the report is made of the records)
+    const faceReport *report = findFaceReportOfFace(gf);
+    if(report) reparamReportMeshedFace(gf, report->meshTime);
+    return true;
   }
 
 } // namespace
@@ -190,16 +198,34 @@ namespace {
     return false;
   }
 
+  // The worst kappa of gf's input triangles
+  double inputKappaMin(const GFace *gf)
+  {
+    const std::vector<SPoint3> &x = gf->stl_vertices_xyz;
+    const std::vector<int> &t = gf->stl_triangles;
+    double worst = 1.;
+    for(std::size_t i = 0; i + 2 < t.size(); i += 3)
+      worst = std::min(worst, triangleKappa(x[t[i]], x[t[i + 1]], x[t[i + 2]]));
+    return worst;
+  }
+
+  // A face's input of slivers below this kappa (sides 100 times their
+  // distance apart) is no mesh to give it: adis16480's pins, a CAD
+  // triangulation's fans of triangles of kappa 2e-5, took its kappa min
+  // 0.041 -> 2e-5 and its kappa mean 0.918 -> 0.897; as for the tangles'
+  // cavities (Mesh/tangledCavity.cpp), the flat pair is left, with a warning
+  const double minInputKappa = 0.01;
+
   // One face of p (the one of fewer input triangles first, not one kept
-  // as its input already) meshed with its input triangles, if that parts
-  // them
+  // as its input already, nor one whose input has slivers) meshed with its
+  // input triangles, if that parts them
   bool separate(GModel *m, const overlappingFaces &p)
   {
     GFace *order[2] = {p.first, p.second};
     if(p.second->stl_triangles.size() < p.first->stl_triangles.size())
       std::swap(order[0], order[1]);
     for(int k = 0; k < 2; k++)
-      if(!keptAsInput(order[k]) &&
+      if(!keptAsInput(order[k]) && inputKappaMin(order[k]) >= minInputKappa &&
          meshedWithInput(order[k], order[1 - k], p.overlaps) &&
          !stillOverlap(m, p))
         return true;
@@ -212,6 +238,7 @@ std::size_t reparamSeparateOverlappingFaces(GModel *m, bool warn)
 {
   std::size_t remeshed = 0;
   std::set<GFace *> done;
+  std::vector<std::string> left;
   for(const overlappingFaces &p : facesMeshedOntoEachOther(m)) {
     if(done.count(p.first) || done.count(p.second)) continue;
     if(separate(m, p)) {
@@ -220,13 +247,19 @@ std::size_t reparamSeparateOverlappingFaces(GModel *m, bool warn)
       remeshed++;
       continue;
     }
-    if(warn)
-      Msg::Warning("Reparam: surfaces %d and %d meshed onto each other (%lu "
-                   "edges inside both or triangles of both): "
-                   "a part thinner than the mesh size; sizes below its "
-                   "thickness (Mesh.MeshSizeMin, Mesh.MeshSizeFromCurvature) "
-                   "separate them",
-                   p.first->tag(), p.second->tag(), p.overlaps);
+    left.push_back(std::to_string(p.first->tag()) + " and " +
+                   std::to_string(p.second->tag()));
+  }
+  if(warn && !left.empty()) {
+    std::string list;
+    for(std::size_t i = 0; i < left.size() && i < 8; i++)
+      list += (i ? ", " : "") + left[i];
+    if(left.size() > 8) list += ", ...";
+    Msg::Warning("Reparam: %lu pair%s of surfaces meshed onto each other (%s): "
+                 "parts thinner than the mesh size, their inputs slivers or "
+                 "no better; sizes below their thickness (Mesh.MeshSizeMin, "
+                 "Mesh.MeshSizeFromCurvature) separate them",
+                 left.size(), left.size() > 1 ? "s" : "", list.c_str());
   }
   return remeshed;
 }

@@ -100,6 +100,13 @@ faceReport *findFaceReport(const GFace *gf)
   return nullptr;
 }
 
+faceReport *findFaceReportOfFace(const GFace *gf)
+{
+  for(faceReport &r : pendingFaceReports())
+    if(r.face == gf) return &r;
+  return nullptr;
+}
+
 void recordOptimization(const GFace *gf, const optimizationRecord &record)
 {
   std::lock_guard<std::mutex> lock(reportsMutex());

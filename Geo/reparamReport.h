@@ -106,6 +106,8 @@ std::vector<faceReport> &pendingFaceReports();
 
 // The pending report of gf if its mesh is still the one measured, else null
 faceReport *findFaceReport(const GFace *gf);
+// The pending report of gf, whatever mesh it was made of (null if none)
+faceReport *findFaceReportOfFace(const GFace *gf);
 
 // Measures the new mesh of discrete face gf (hook in discreteFace::mesh,
 // patches/0001) and keeps the result for the model's report
