@@ -216,16 +216,36 @@ namespace {
   // cavities (Mesh/tangledCavity.cpp), the flat pair is left, with a warning
   const double minInputKappa = 0.01;
 
+  // Whether gf's input has a node off its boundary: one without gives the
+  // same triangles between its curves' nodes (pelvis_tlem2: a pocket of
+  // two input triangles a side)
+  bool inputHasInnerNode(const GFace *gf)
+  {
+    const std::vector<int> &t = gf->stl_triangles;
+    std::map<std::pair<int, int>, int> uses;
+    for(std::size_t i = 0; i + 2 < t.size(); i += 3)
+      for(int k = 0; k < 3; k++)
+        uses[std::minmax(t[i + k], t[i + (k + 1) % 3])]++;
+    std::set<int> boundary, all(t.begin(), t.end());
+    for(const auto &u : uses)
+      if(u.second == 1) {
+        boundary.insert(u.first.first);
+        boundary.insert(u.first.second);
+      }
+    return all.size() > boundary.size();
+  }
+
   // One face of p (the one of fewer input triangles first, not one kept
-  // as its input already, nor one whose input has slivers) meshed with its
-  // input triangles, if that parts them
+  // as its input already, nor one whose input has slivers or no node
+  // inside) meshed with its input triangles, if that parts them
   bool separate(GModel *m, const overlappingFaces &p)
   {
     GFace *order[2] = {p.first, p.second};
     if(p.second->stl_triangles.size() < p.first->stl_triangles.size())
       std::swap(order[0], order[1]);
     for(int k = 0; k < 2; k++)
-      if(!keptAsInput(order[k]) && inputKappaMin(order[k]) >= minInputKappa &&
+      if(!keptAsInput(order[k]) && inputHasInnerNode(order[k]) &&
+         inputKappaMin(order[k]) >= minInputKappa &&
          meshedWithInput(order[k], order[1 - k], p.overlaps) &&
          !stillOverlap(m, p))
         return true;

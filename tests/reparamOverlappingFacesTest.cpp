@@ -156,14 +156,17 @@ TEST(reparamOverlappingFaces, facesSideBySideDoNotOverlap)
 
 TEST(reparamOverlappingFaces, theOtherFaceIsTriedWhenTheFirstStaysOnIt)
 {
-  // above's input is its mesh (two triangles across the diagonal 1-3): as
-  // its input it still shares that diagonal with below; below's input,
-  // across the other diagonal, parts them
+  // above's input keeps the diagonal 1-3 inside (a node at the centroid of
+  // one of its halves): as its input it still shares that diagonal with
+  // below; below's input, a fan, parts them
   flatPillowModel();
   GModel *m = GModel::current();
   GFace *above = m->getFaceByTag(1), *below = m->getFaceByTag(2);
-  setInput(above, 0., true);
-  setInput(below, 0., false, true);
+  above->stl_vertices_xyz = {SPoint3(0., 0., 0.), SPoint3(1., 0., 0.),
+                             SPoint3(1., 1., 0.), SPoint3(0., 1., 0.),
+                             SPoint3(2. / 3., 1. / 3., 0.)};
+  above->stl_triangles = {0, 1, 4, 1, 2, 4, 2, 0, 4, 0, 2, 3};
+  setInput(below, -0.1, false);
   ASSERT_EQ(facesMeshedOntoEachOther(m).size(), 1u);
   EXPECT_EQ(reparamSeparateOverlappingFaces(m), 1u);
   EXPECT_TRUE(facesMeshedOntoEachOther(m).empty());
@@ -173,6 +176,21 @@ TEST(reparamOverlappingFaces, theOtherFaceIsTriedWhenTheFirstStaysOnIt)
     above->triangles.size() + below->triangles.size();
   EXPECT_EQ(reparamSeparateOverlappingFaces(m), 0u);
   EXPECT_EQ(above->triangles.size() + below->triangles.size(), triangles);
+}
+
+TEST(reparamOverlappingFaces, anInputWithoutInnerNodeIsNoMeshToGive)
+{
+  // both inputs two triangles between the corners: stitched to the curves
+  // they make the same kind of flat pair (pelvis_tlem2's pockets): left,
+  // neither face kept as its input
+  flatPillowModel();
+  GModel *m = GModel::current();
+  setInput(m->getFaceByTag(1), 0., true);
+  setInput(m->getFaceByTag(2), 0., false, true);
+  ASSERT_EQ(facesMeshedOntoEachOther(m).size(), 1u);
+  EXPECT_EQ(reparamSeparateOverlappingFaces(m), 0u);
+  EXPECT_FALSE(keptAsInput(m->getFaceByTag(1)));
+  EXPECT_FALSE(keptAsInput(m->getFaceByTag(2)));
 }
 
 TEST(reparamOverlappingFaces, anInputOfSliversIsNoMeshToGive)
