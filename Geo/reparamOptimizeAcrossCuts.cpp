@@ -569,13 +569,9 @@ int reparamOptimizeMeshedModel(GModel *m)
   reparamRestoreRefusedSurfaces(m);
   if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;
-  // before the optimizations, with the curves' nodes where the 1D mesh put
-  // them (their slides may leave a face's input no longer stitchable:
-  // pelvis_tlem2, a pocket of two input triangles a side), and on the mesh
-  // as it stays (an optimization across the cuts may part two faces, or
-  // meet them), warning then of the pairs left
-  int changed = (int)reparamSeparateOverlappingFaces(m, false);
-  if(getReparamOptions().optimize) changed += optimizeMeshedModel(m);
-  changed += (int)reparamSeparateOverlappingFaces(m, true);
+  int changed = getReparamOptions().optimize ? optimizeMeshedModel(m) : 0;
+  // last, on the mesh as it stays (an optimization across the cuts may part
+  // two faces meshed onto each other, or meet them)
+  changed += (int)reparamSeparateOverlappingFaces(m);
   return changed;
 }

@@ -209,12 +209,10 @@ namespace {
     return worst;
   }
 
-  // A face's input of slivers below this kappa (sides 100 times their
-  // distance apart) is no mesh to give it: adis16480's pins, a CAD
-  // triangulation's fans of triangles of kappa 2e-5, took its kappa min
-  // 0.041 -> 2e-5 and its kappa mean 0.918 -> 0.897; as for the tangles'
-  // cavities (Mesh/tangledCavity.cpp), the flat pair is left, with a warning
-  const double minInputKappa = 0.01;
+  // A face's input of slivers (sliverKappa) is no mesh to give it:
+  // adis16480's pins, a CAD triangulation's fans of triangles of kappa 2e-5,
+  // took its kappa min 0.041 -> 2e-5 and its kappa mean 0.918 -> 0.897; the
+  // flat pair is left, with a warning
 
   // Whether gf's input has a node off its boundary: one without gives the
   // same triangles between its curves' nodes (pelvis_tlem2: a pocket of
@@ -245,7 +243,7 @@ namespace {
       std::swap(order[0], order[1]);
     for(int k = 0; k < 2; k++)
       if(!keptAsInput(order[k]) && inputHasInnerNode(order[k]) &&
-         inputKappaMin(order[k]) >= minInputKappa &&
+         inputKappaMin(order[k]) >= sliverKappa &&
          meshedWithInput(order[k], order[1 - k], p.overlaps) &&
          !stillOverlap(m, p))
         return true;

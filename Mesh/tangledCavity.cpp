@@ -61,7 +61,7 @@ namespace {
     bool validTriangle(const SPoint3 &a, const SPoint3 &b,
                        const SPoint3 &c) const
     {
-      return triangleKappa(a, b, c) >= 0.01 &&
+      return triangleKappa(a, b, c) >= sliverKappa &&
              triangleAgainstInput(a, b, c, _input, _onInput) == _reversed;
     }
     bool fan(const cavity &c, const closestTriangleHit &center,

@@ -15,6 +15,12 @@ class MTriangle;
 // equilateral triangle, 0 for a flat one
 double triangleKappa(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2);
 
+// Below this kappa (sides about 100 times their distance apart) a triangle
+// is a sliver, no better than a fold: no repair makes one (a tangle's
+// cavity, Mesh/tangledCavity.cpp), and an input of such triangles is given
+// to no face in place of its mesh (Geo/reparamOverlappingFaces.cpp)
+const double sliverKappa = 0.01;
+
 struct kappaStatistics {
   std::size_t triangles = 0;
   double min = 0., mean = 0.;
