@@ -116,6 +116,11 @@ namespace {
       if(CTX::instance()->mesh.recombineAll || gf->meshAttributes.recombine)
         return "quadrangles";
       if(reparamAnisotropicFace(gf)) return "anisotropic metric";
+      // BAMG numbers the nodes of a face's curves in the nodes themselves
+      // (MVertex::setIndex), which the faces on both sides of a curve
+      // share, and a face it leaves with a hole is meshed again under
+      // another global algorithm (Geo/reparamMesherFallback.cpp)
+      if(gf->getMeshingAlgo() == ALGO_2D_BAMG) return "BAMG";
     }
     return nullptr;
   }

@@ -32,7 +32,9 @@ bool reparamRecombineWithParametrization(GFace *gf);
 // it: the mesh would depend on the threads' order); surfaces unless a
 // discrete one is recombined into quadrangles or meshed with the
 // anisotropic metric (those steps change options and curves around the
-// face). Logs it once per call with several threads. Reparam's state for
+// face) or with BAMG (which numbers the nodes of the curves in the nodes,
+// shared by the faces on both sides, and whose holes are meshed again
+// under another global algorithm). Logs it once per call with several threads. Reparam's state for
 // the triangle meshes of faces is per thread or behind a mutex; its own
 // layout runs on the threads too (Mesh/patchLayout.h).
 bool reparamMeshInParallel(GModel *m, int dim);

@@ -1,6 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include "Context.h"
 #include "GFace.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
@@ -105,7 +106,15 @@ bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
   detachedMesh kept = detach(gf);
   trying = true;
   gf->setMeshingAlgo(other);
+  // Gmsh's meshers read the global algorithm too: under BAMG's, Delaunay's
+  // point insertion takes no size field (meshGFaceDelaunayInsertion.cpp;
+  // fertility's faces BAMG left with holes got 2.7 times the triangles
+  // asked) nor MeshAdapt's the curves' sizes. The other mesher's, for this
+  // mesh (BAMG's faces are meshed on one thread: Geo/reparamFaceMeshing.h)
+  const int global = CTX::instance()->mesh.algo2d;
+  if(global == ALGO_2D_BAMG) CTX::instance()->mesh.algo2d = other;
   meshGFace()(gf, false);
+  CTX::instance()->mesh.algo2d = global;
   gf->unsetMeshingAlgo();
   trying = false;
   reparamOptimizeMeshedFace(gf);

@@ -151,3 +151,34 @@ TEST(reparamMeshValidity, aFaceTheMesherDidNotFillIsMeshedAgain)
   EXPECT_EQ(longEdges, 0u);
   EXPECT_GT(worst, 0.5);
 }
+
+TEST(reparamMesherFallback, underBamgTheOtherMesherTakesTheSizes)
+{
+  // BAMG's mesh of a 20 x 20 square at the size 3, then Delaunay's in its
+  // place while BAMG is the global algorithm: Gmsh's Delaunay insertion
+  // reads it and then took a size of 1 (fertility's faces BAMG left with
+  // holes: 2.7 times the triangles)
+  gmsh::option::setNumber("Mesh.Algorithm", 7);
+  remeshWithRecipe(rectangleGrid(40, 40, 20., 20.), 3.);
+  ASSERT_EQ(GModel::current()->getNumFaces(), 1u);
+  GFace *gf = *GModel::current()->firstFace();
+  ASSERT_TRUE(gf && !gf->triangles.empty());
+  const std::size_t bamg = gf->triangles.size();
+  // the recipe's sizes again (it resets them)
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 3.);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 3.);
+  meshDefects hole;
+  hole.unusedCurveSegments = 1;
+  EXPECT_TRUE(reparamTryOtherMesher(gf, hole));
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
+  // about as many triangles as BAMG's (with a size of 1: 2.3 times)
+  EXPECT_GT(3 * gf->triangles.size(), 2 * bamg);
+  EXPECT_LT(2 * gf->triangles.size(), 3 * bamg);
+  // the global algorithm is BAMG's again
+  double algorithm = 0.;
+  gmsh::option::getNumber("Mesh.Algorithm", algorithm);
+  EXPECT_EQ(algorithm, 7.);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+}
