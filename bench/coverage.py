@@ -240,6 +240,8 @@ def read_report(path):
             "kappa min": report["total"]["kappaMin"],
             "kappa mean": report["total"].get("kappaMean"),
             "tau": report["total"].get("tau"),
+            "eta min": report["total"].get("etaMin"),
+            "eta mean": report["total"].get("etaMean"),
             # Mesh.CompoundOptimize: the worst kappa before it, its time
             "optimization": report["total"].get("optimization"),
         }
@@ -250,8 +252,9 @@ def read_report(path):
 # --- One run -----------------------------------------------------------------
 
 
-def recipe(stl, map_value, size, folder):
-    """The README's STL recipe with its default options."""
+def recipe(stl, map_value, size, folder, mesher="Mesh.Algorithm = 6;"):
+    """The README's STL recipe with its default options (`mesher`: the
+    planar mesher's options, Frontal-Delaunay by default)."""
     return "\n".join(
         [
             # the map first: Reparam repairs the STL facets' orientation at
@@ -262,7 +265,7 @@ def recipe(stl, map_value, size, folder):
             "CreateGeometry;",
             "Mesh.MeshSizeMin = %.9g;" % size,
             "Mesh.MeshSizeMax = %.9g;" % size,
-            "Mesh.Algorithm = 6;",
+            mesher,
             'Mesh.CompoundReportFile = "%s";' % os.path.join(folder, "report.json"),
             "Mesh.MshFileVersion = 4.1;",
             "Mesh.Binary = 0;",
@@ -305,13 +308,16 @@ def run_gmsh(gmsh, geo, log, timeout):
     return status, cpu
 
 
-def measure(gmsh, stl, map_value, input_mesh, timeout, logs):
-    """One row's numbers for `stl` remeshed with `map_value`."""
+def measure(gmsh, stl, map_value, input_mesh, timeout, logs,
+            mesher="Mesh.Algorithm = 6;"):
+    """One row's numbers for `stl` remeshed with `map_value` (and the planar
+    mesher's options `mesher`)."""
     triangles, area, loops_in, nonmanifold_in = input_mesh
     with tempfile.TemporaryDirectory(prefix="reparam-coverage-") as folder:
         geo = os.path.join(folder, "recipe.geo")
         with open(geo, "w") as f:
-            f.write(recipe(stl, map_value, mesh_size(area, triangles), folder))
+            f.write(recipe(stl, map_value, mesh_size(area, triangles), folder,
+                           mesher))
         log = os.path.join(folder, "gmsh.log")
         status, cpu = run_gmsh(gmsh, geo, log, timeout)
         row = {
