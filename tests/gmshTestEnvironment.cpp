@@ -218,3 +218,14 @@ void squareWithAShortCurve()
   gmsh::model::mesh::addElementsByType(1, 2, {}, triangles);
   gmsh::model::mesh::createGeometry();
 }
+
+GFace *meshedSquareWithAShortCurve(double size)
+{
+  squareWithAShortCurve();
+  gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  gmsh::model::mesh::generate(2);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  return GModel::current()->getFaceByTag(1);
+}

@@ -8,6 +8,7 @@
 #include "SPoint2.h"
 #include "testPatches.h"
 
+class GFace;
 class MTriangle;
 class MVertex;
 
@@ -61,5 +62,9 @@ freeMeshEdges(std::size_t *nonManifold = nullptr);
 // curve, as the layout leaves between close corners), through
 // CreateGeometry
 void squareWithAShortCurve();
+
+// squareWithAShortCurve() meshed (Mesh 2) at `size` with the current
+// Mesh.Algorithm, the size options reset after; its face
+GFace *meshedSquareWithAShortCurve(double size);
 
 #endif

@@ -17,14 +17,8 @@ namespace {
 
   GFace *squareMeshedWith(int algorithm)
   {
-    squareWithAShortCurve();
     gmsh::option::setNumber("Mesh.Algorithm", algorithm);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
-    gmsh::model::mesh::generate(2);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-    return GModel::current()->getFaceByTag(1);
+    return meshedSquareWithAShortCurve(0.1);
   }
 
   // a triangle with an edge on the border taken out of gf: a hole

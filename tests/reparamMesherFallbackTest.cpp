@@ -15,16 +15,7 @@
 
 namespace {
 
-  GFace *meshedSquare()
-  {
-    squareWithAShortCurve();
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
-    gmsh::model::mesh::generate(2);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-    return GModel::current()->getFaceByTag(1);
-  }
+  GFace *meshedSquare() { return meshedSquareWithAShortCurve(0.1); }
 
 } // namespace
 
