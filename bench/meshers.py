@@ -62,7 +62,7 @@ def main():
     print("| " + " | ".join(COLUMNS) + " |")
     print("|---|---|---|" + "---:|" * (len(COLUMNS) - 3))
     whole, against, errors = (collections.Counter() for _ in range(3))
-    for stl in args.meshes:
+    for stl in map(os.path.abspath, args.meshes):
         name = cv.mesh_name(stl)
         triangles, area = cv.read_stl(stl)
         input_mesh = (len(triangles), area) + cv.input_topology(args.gmsh, stl)
