@@ -1,6 +1,8 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
+#include <mutex>
+#include <set>
 #include "GFace.h"
 #include "GmshMessage.h"
 #include "reparamBamg.h"
@@ -8,6 +10,11 @@
 #include "reparamReport.h"
 
 namespace {
+
+  // the faces BAMG gave up on, until their mesh is replaced (BAMG's faces
+  // are meshed on one thread; the lock for a model meshed again)
+  std::mutex failedLock;
+  std::set<const GFace *> failed;
 
   bool parametrizedByReparam(const GFace *gf)
   {
@@ -32,13 +39,20 @@ bool reparamBamgFailed(GFace *gf)
 {
   if(!parametrizedByReparam(gf)) return false;
   if(reparamAnisotropicFace(gf))
-    Msg::Warning("Reparam: surface %d: BAMG failed, its isotropic Delaunay "
-                 "mesh kept (%lu triangles, at the curvature metric's "
-                 "smallest size)",
-                 gf->tag(), gf->triangles.size());
+    Msg::Warning("Reparam: surface %d: BAMG failed, meshed by Delaunay "
+                 "instead (isotropic, at the curvature metric's smallest "
+                 "size)",
+                 gf->tag());
   else
-    Msg::Info("Reparam: surface %d: BAMG failed, its Delaunay mesh kept "
-              "(%lu triangles)",
-              gf->tag(), gf->triangles.size());
+    Msg::Info("Reparam: surface %d: BAMG failed, meshed by Delaunay instead",
+              gf->tag());
+  std::lock_guard<std::mutex> lock(failedLock);
+  failed.insert(gf);
   return true;
+}
+
+bool takeBamgFailure(const GFace *gf)
+{
+  std::lock_guard<std::mutex> lock(failedLock);
+  return failed.erase(gf) > 0;
 }

@@ -12,10 +12,10 @@
 // faces of 9 to 100 vertices.
 //
 // A face whose BAMG mesh fails: BAMG meshes the face Gmsh's Delaunay mesher
-// meshed first, at the smallest size of the metric, and gave up on some
-// faces of the segmentation-like STLs (`we loss some 1 edges ... Fatal error
-// in the meshgenerator 1100`: one face of vessel_slices), which Gmsh
-// reports as an error, the face keeping that mesh.
+// meshed first, and gave up on some faces of the segmentation-like STLs
+// (`we loss some 1 edges ... Fatal error in the meshgenerator 1100`: one
+// face of vessel_slices), which Gmsh reports as an error, the face keeping
+// that first mesh.
 
 #ifndef REPARAM_BAMG_H
 #define REPARAM_BAMG_H
@@ -34,9 +34,15 @@ long bamgMaxVertices(long vertices);
 double reparamBamgMaxVertices(GFace *gf, int vertices);
 
 // Called when BAMG failed on gf: for a face Reparam parametrized, logs that
-// it keeps its Delaunay mesh (a warning where that loses the anisotropy of
-// Mesh.CompoundCurvatureMetric, else information) and returns true; false
-// for the others (Gmsh's error)
+// it is meshed by Delaunay instead (a warning where that loses the
+// anisotropy of Mesh.CompoundCurvatureMetric, else information), notes it
+// for takeBamgFailure and returns true; false for the others (Gmsh's
+// error). The face holds the mesh BAMG started from, which Delaunay made
+// under BAMG's global algorithm, without the sizes
 bool reparamBamgFailed(GFace *gf);
+
+// Whether BAMG failed on gf since the last call (then forgotten): the
+// validity hook meshes it again (Geo/reparamMeshValidity.cpp)
+bool takeBamgFailure(const GFace *gf);
 
 #endif

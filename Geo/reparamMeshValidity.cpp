@@ -17,6 +17,7 @@
 #include "closestTriangle.h"
 #include "invertedElementRepair.h"
 #include "meshFidelity.h"
+#include "reparamBamg.h"
 #include "reparamInputMesh.h"
 #include "reparamMesherFallback.h"
 #include "reparamMeshValidity.h"
@@ -295,7 +296,20 @@ std::size_t countUnusedCurveSegments(GFace *gf)
 
 bool reparamPlanarMeshLeavesHole(GFace *gf)
 {
-  if(!isReparamTriangleMesh(gf) || reparamTryingOtherMesher()) return false;
+  // quadrangle meshes too: Blossom's pairing, and Gmsh's smoothing of the
+  // quadrangles in (u, v), left a quadrangle of gmsh2x_car_body's face 7
+  // with two nodes of its curve as a diagonal, the segment between them
+  // used by the face on its other side only (a boundary loop more)
+  if(!(isReparamTriangleMesh(gf) || isReparamQuadMesh(gf)) ||
+     reparamTryingOtherMesher())
+    return false;
+  if(takeBamgFailure(gf)) {
+    // the mesh BAMG started from, which Delaunay made under BAMG's global
+    // algorithm without the sizes: any whole mesh of Delaunay's is better
+    meshDefects failed;
+    failed.againstInput = (std::size_t)-1;
+    reparamTryOtherMesher(gf, failed, ALGO_2D_DELAUNAY);
+  }
   meshDefects defects;
   defects.unusedCurveSegments = countUnusedCurveSegments(gf);
   if(!defects.unusedCurveSegments) return false;

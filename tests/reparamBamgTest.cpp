@@ -6,7 +6,9 @@
 #include "GModel.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
+#include "MTriangle.h"
 #include "reparamBamg.h"
+#include "reparamMeshValidity.h"
 
 TEST(reparamBamg, theBoundFollowsTheVertices)
 {
@@ -36,10 +38,35 @@ TEST(reparamBamg, aFaceReparamParametrizedIsBoundedAndMeshed)
   EXPECT_TRUE(surfacesWithoutElements().empty());
   EXPECT_EQ(reparamBamgMaxVertices(gf, 100), 20000.);
   EXPECT_EQ(reparamBamgMaxVertices(gf, 1000), 32000.);
-  // a failure is Reparam's to log: the face keeps its mesh
+  // a failure is Reparam's to log, noted once
   const std::size_t triangles = gf->triangles.size();
   EXPECT_TRUE(reparamBamgFailed(gf));
   EXPECT_EQ(gf->triangles.size(), triangles);
+  EXPECT_TRUE(takeBamgFailure(gf));
+  EXPECT_FALSE(takeBamgFailure(gf));
+}
+
+TEST(reparamBamg, aFaceBamgGaveUpOnIsMeshedByDelaunay)
+{
+  // as Gmsh's BAMG mesher leaves a face it gave up on, then the validity
+  // hook: Delaunay's mesh in its place, at the sizes asked
+  gmsh::option::setNumber("Mesh.Algorithm", 7);
+  GFace *gf = meshedSquareWithAShortCurve(0.1);
+  ASSERT_TRUE(gf && !gf->triangles.empty());
+  const MTriangle *first = gf->triangles[0];
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+  ASSERT_TRUE(reparamBamgFailed(gf));
+  EXPECT_FALSE(reparamPlanarMeshLeavesHole(gf));
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  ASSERT_FALSE(gf->triangles.empty());
+  EXPECT_NE(gf->triangles[0], first);
+  EXPECT_FALSE(takeBamgFailure(gf));
+  // the unit square at 0.1
+  EXPECT_GT(gf->triangles.size(), 80u);
+  EXPECT_LT(gf->triangles.size(), 400u);
 }
 
 TEST(reparamBamg, anotherFaceKeepsBamgsDefaults)

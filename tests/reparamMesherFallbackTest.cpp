@@ -173,3 +173,35 @@ TEST(reparamMesherFallback, underBamgTheOtherMesherTakesTheSizes)
   EXPECT_EQ(algorithm, 7.);
   gmsh::option::setNumber("Mesh.Algorithm", 6);
 }
+
+TEST(reparamMeshValidity, aQuadrangleMeshWithAHoleIsMeshedAgain)
+{
+  gmsh::option::setNumber("Mesh.Algorithm", 8);
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  GFace *gf = meshedSquare();
+  ASSERT_TRUE(gf && !gf->quadrangles.empty());
+  // a quadrangle with a side on the border taken out: a hole
+  auto onBorder = std::find_if(
+    gf->quadrangles.begin(), gf->quadrangles.end(), [](MQuadrangle *q) {
+      for(int k = 0; k < 4; k++)
+        if(q->getVertex(k)->onWhat()->dim() < 2 &&
+           q->getVertex((k + 1) % 4)->onWhat()->dim() < 2)
+          return true;
+      return false;
+    });
+  ASSERT_TRUE(onBorder != gf->quadrangles.end());
+  delete *onBorder;
+  gf->quadrangles.erase(onBorder);
+  gf->deleteVertexArrays();
+  ASSERT_GE(countUnusedCurveSegments(gf), 1u);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+  // Delaunay's mesh, recombined, in its place: no MeshAdapt from Gmsh
+  EXPECT_FALSE(reparamPlanarMeshLeavesHole(gf));
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.RecombineAll", 0);
+  EXPECT_FALSE(gf->quadrangles.empty());
+  EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
+}
