@@ -22,11 +22,11 @@
 
 class GFace;
 
-// For a face of `vertices` vertices: 32 times that, at least 20000 and at
-// most BAMG's 900000. BAMG meshes a face the isotropic mesher meshed first,
-// at the smallest size of the metric (Geo/reparamCurvatureMetric.h), so
-// that its meshes have fewer vertices than that one or about as many; it
-// stops inserting points at the bound
+// For a face of `vertices` vertices (the mesh BAMG starts from): 32 times
+// that, at least 20000 and at most BAMG's 900000. BAMG refines that mesh to
+// the metric, and stops inserting points at the bound: on the 33 meshes of
+// bench/RESULTS-meshers.md, with and without Mesh.CompoundCurvatureMetric
+// (bench/RESULTS-anisotropic.md), no face made more than 5336 vertices
 long bamgMaxVertices(long vertices);
 
 // BAMG's argument for gf's mesh of `vertices` vertices: bamgMaxVertices for

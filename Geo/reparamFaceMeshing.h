@@ -34,9 +34,9 @@ bool reparamRecombineWithParametrization(GFace *gf);
 // anisotropic metric (those steps change options and curves around the
 // face) or with BAMG (which numbers the nodes of the curves in the nodes,
 // shared by the faces on both sides, and whose holes are meshed again
-// under another global algorithm). Logs it once per call with several threads. Reparam's state for
-// the triangle meshes of faces is per thread or behind a mutex; its own
-// layout runs on the threads too (Mesh/patchLayout.h).
+// under another global algorithm). Logs it once per call with several threads.
+// Reparam's state for the triangle meshes of faces is per thread or behind a
+// mutex; its own layout runs on the threads too (Mesh/patchLayout.h).
 bool reparamMeshInParallel(GModel *m, int dim);
 
 // Called by meshGenerator (patches/0020) around Gmsh's split of the curve

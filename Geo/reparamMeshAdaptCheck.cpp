@@ -1,6 +1,5 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
-#include <string>
 #include "GFace.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
@@ -19,22 +18,6 @@ namespace {
     d.unusedCurveSegments = countUnusedCurveSegments(gf);
     d.againstInput = countTrianglesAgainstInput(gf);
     return d;
-  }
-
-  // "3 segments of its curves unused (a hole), 1 element against the
-  // input", without what is none
-  std::string defectsText(const meshDefects &d)
-  {
-    std::string text;
-    if(d.unusedCurveSegments)
-      text = std::to_string(d.unusedCurveSegments) + " segment" +
-             (d.unusedCurveSegments == 1 ? "" : "s") +
-             " of its curves unused (a hole)";
-    if(d.againstInput)
-      text += (text.empty() ? "" : ", ") + std::to_string(d.againstInput) +
-              " element" + (d.againstInput == 1 ? "" : "s") +
-              " against the input";
-    return text;
   }
 
   bool whole(const meshDefects &d)
@@ -58,7 +41,7 @@ bool reparamCheckMeshAdaptMesh(GFace *gf)
   defects.longEdges = countLongEdges(gf);
   Msg::Info("Reparam: surface %d: MeshAdapt leaves %s: the other planar "
             "meshers tried",
-            gf->tag(), defectsText(defects).c_str());
+            gf->tag(), meshDefectsText(defects, "element").c_str());
   bool replaced = false;
   for(int other : {ALGO_2D_DELAUNAY, ALGO_2D_FRONTAL}) {
     if(!reparamTryOtherMesher(gf, defects, other)) continue;

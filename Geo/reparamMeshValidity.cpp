@@ -300,10 +300,11 @@ bool reparamPlanarMeshLeavesHole(GFace *gf)
   // quadrangles in (u, v), left a quadrangle of gmsh2x_car_body's face 7
   // with two nodes of its curve as a diagonal, the segment between them
   // used by the face on its other side only (a boundary loop more)
-  if(!(isReparamTriangleMesh(gf) || isReparamQuadMesh(gf)) ||
-     reparamTryingOtherMesher())
-    return false;
-  if(takeBamgFailure(gf)) {
+  if(reparamTryingOtherMesher()) return false;
+  // taken whatever the mesh: no face is left in the list for another model
+  const bool bamgFailed = takeBamgFailure(gf);
+  if(!(isReparamTriangleMesh(gf) || isReparamQuadMesh(gf))) return false;
+  if(bamgFailed) {
     // the mesh BAMG started from, which Delaunay made under BAMG's global
     // algorithm without the sizes: any whole mesh of Delaunay's is better
     meshDefects failed;

@@ -65,25 +65,24 @@ namespace {
     }
   }
 
-  std::string defectsText(const meshDefects &d,
-                          const char *element = "triangle")
-  {
-    std::string text;
-    if(d.unusedCurveSegments)
-      text = std::to_string(d.unusedCurveSegments) +
-             " segments of its curves unused, ";
-    if(d.againstInput == (std::size_t)-1)
-      text += std::string(element) + "s against the input not counted";
-    else
-      text += std::to_string(d.againstInput) + " " + element +
-              (d.againstInput == 1 ? "" : "s") + " against the input";
-    if(d.longEdges)
-      text += ", " + std::to_string(d.longEdges) +
-              " edges longer than twice the size";
-    return text;
-  }
-
 } // namespace
+
+std::string meshDefectsText(const meshDefects &d, const char *element)
+{
+  std::string text;
+  if(d.unusedCurveSegments)
+    text = std::to_string(d.unusedCurveSegments) + " segment" +
+           (d.unusedCurveSegments == 1 ? "" : "s") + " of its curves unused, ";
+  if(d.againstInput == (std::size_t)-1)
+    text += std::string(element) + "s against the input not counted";
+  else
+    text += std::to_string(d.againstInput) + " " + element +
+            (d.againstInput == 1 ? "" : "s") + " against the input";
+  if(d.longEdges)
+    text +=
+      ", " + std::to_string(d.longEdges) + " edges longer than twice the size";
+  return text;
+}
 
 bool reparamTryingOtherMesher() { return trying; }
 
@@ -125,13 +124,13 @@ bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
   if(gf->getNumMeshElements() && found < current) {
     destroy(kept);
     Msg::Info("Reparam: surface %d: remeshed with %s: %s -> %s", gf->tag(),
-              algorithmName(other), defectsText(current, element).c_str(),
-              defectsText(found, element).c_str());
+              algorithmName(other), meshDefectsText(current, element).c_str(),
+              meshDefectsText(found, element).c_str());
     return true;
   }
   forgetOptimization(gf);
   attach(gf, kept);
   Msg::Info("Reparam: surface %d: %s left %s: mesh kept", gf->tag(),
-            algorithmName(other), defectsText(found, element).c_str());
+            algorithmName(other), meshDefectsText(found, element).c_str());
   return false;
 }

@@ -17,6 +17,7 @@
 #define REPARAM_MESHER_FALLBACK_H
 
 #include <cstddef>
+#include <string>
 
 class GFace;
 
@@ -33,6 +34,11 @@ struct meshDefects {
     return longEdges < o.longEdges;
   }
 };
+
+// "1 segment of its curves unused, 2 triangles against the input" (with
+// `element` for the elements' name)
+std::string meshDefectsText(const meshDefects &d,
+                            const char *element = "triangle");
 
 // gf's elements (triangles, or quadrangles and the triangles Blossom
 // left) against its input, counted against the orientation most of them

@@ -205,3 +205,21 @@ TEST(reparamMeshValidity, aQuadrangleMeshWithAHoleIsMeshedAgain)
   EXPECT_FALSE(gf->quadrangles.empty());
   EXPECT_EQ(countUnusedCurveSegments(gf), 0u);
 }
+
+TEST(reparamMesherFallback, defectsInWords)
+{
+  meshDefects d;
+  EXPECT_EQ(meshDefectsText(d), "0 triangles against the input");
+  d.unusedCurveSegments = 1;
+  d.againstInput = 2;
+  d.longEdges = 3;
+  EXPECT_EQ(meshDefectsText(d, "element"),
+            "1 segment of its curves unused, 2 elements against the input, 3 "
+            "edges longer than twice the size");
+  d.unusedCurveSegments = 4;
+  d.againstInput = (std::size_t)-1;
+  d.longEdges = 0;
+  EXPECT_EQ(meshDefectsText(d),
+            "4 segments of its curves unused, triangles against the input "
+            "not counted");
+}
