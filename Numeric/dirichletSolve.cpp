@@ -7,6 +7,8 @@
 #include <Eigen/UmfPackSupport>
 #include "dirichletSolve.h"
 
+namespace reparam {
+
 namespace {
 
   template <class Solver, class Scalar>
@@ -131,3 +133,5 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
   if(err.ok()) m = x;
   return err;
 }
+} // namespace reparam
+

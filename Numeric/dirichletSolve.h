@@ -12,6 +12,8 @@
 #include <Eigen/SparseCore>
 #include "reparamStatus.h"
 
+namespace reparam {
+
 enum class sparseFactorization {
   cholesky, // symmetric (Hermitian) positive definite: SimplicialLDLT
   lu // general, real only: KLU, UMFPACK above 10k unknowns
@@ -36,5 +38,7 @@ reparamError dirichletSolve(const Eigen::SparseMatrix<double> &L,
                             const std::vector<char> &isFixed,
                             std::vector<double> &uv,
                             sparseFactorization factorization);
+
+} // namespace reparam
 
 #endif

@@ -5,6 +5,8 @@
 #include <Spectra/SymEigsSolver.h>
 #include "fiedlerVector.h"
 
+namespace reparam {
+
 namespace {
 
   // y = P (L + delta I)^-1 P x, P the projection orthogonal to the constant
@@ -84,3 +86,5 @@ fiedlerResult fiedlerVector(int n, const std::vector<std::array<int, 2> > &edges
   result.lambda = 1. / solver.eigenvalues()[0] - delta;
   return result;
 }
+} // namespace reparam
+

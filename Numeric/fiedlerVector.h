@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 #include "reparamStatus.h"
 
+namespace reparam {
+
 struct fiedlerResult {
   reparamError error;
   Eigen::VectorXd x; // unit norm, orthogonal to the constant vector
@@ -22,5 +24,7 @@ struct fiedlerResult {
 // Graph of n nodes, edges (i, j) with weights w > 0; it must be connected.
 fiedlerResult fiedlerVector(int n, const std::vector<std::array<int, 2> > &edges,
                             const std::vector<double> &weights);
+
+} // namespace reparam
 
 #endif

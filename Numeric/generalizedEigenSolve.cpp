@@ -4,6 +4,8 @@
 #include <Spectra/SymEigsSolver.h>
 #include "generalizedEigenSolve.h"
 
+namespace reparam {
+
 namespace {
 
   // B is singular, so Spectra's shift-invert mode (B positive definite)
@@ -155,3 +157,5 @@ eigenpairResult smallestGeneralizedEigenpair(
   result.x /= std::sqrt(xBx);
   return result;
 }
+} // namespace reparam
+

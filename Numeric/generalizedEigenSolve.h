@@ -13,6 +13,8 @@
 #include <Eigen/SparseCore>
 #include "reparamStatus.h"
 
+namespace reparam {
+
 struct eigenpairResult {
   reparamError error;
   Eigen::VectorXcd x; // B-normalized: x^H B x = 1
@@ -28,5 +30,7 @@ struct eigenpairResult {
 eigenpairResult smallestGeneralizedEigenpair(
   const Eigen::SparseMatrix<std::complex<double> > &L, const Eigen::VectorXd &B,
   const Eigen::MatrixXcd &kernel, double shift);
+
+} // namespace reparam
 
 #endif

@@ -13,6 +13,8 @@
 #include "reparamReport.h"
 #include "reparamViews.h"
 
+using namespace reparam;
+
 StringXNumber ParametrizationOptions_Number[] = {
   {GMSH_FULLRC, "SurfaceTag", nullptr, -1.},
   {GMSH_FULLRC, "IsoLines", nullptr, 20.}};

@@ -12,6 +12,8 @@
 #include "reparamViews.h"
 #include "triangleQuality.h"
 
+using namespace reparam;
+
 StringXNumber SurfaceMeshQualityOptions_Number[] = {
   {GMSH_FULLRC, "SurfaceTag", nullptr, -1.},
   {GMSH_FULLRC, "CreateViews", nullptr, 1.},

@@ -7,6 +7,8 @@
 #include "PViewOptions.h"
 #include "reparamViews.h"
 
+namespace reparam {
+
 namespace {
 
   // Coordinates of one element in the list format: all x, then all y, z
@@ -92,3 +94,5 @@ PView *histogramView(const std::string &name, const std::vector<double> &shares,
   for(std::size_t i = 0; i < shares.size(); i++) x[i] = low + (i + 0.5) * width;
   return new PView(name, name + "_histogram", x, y);
 }
+} // namespace reparam
+

@@ -12,6 +12,8 @@
 
 class PView;
 
+namespace reparam {
+
 // One value per element of `mesh` (triangles first, then quadrangles),
 // drawn constant over the element
 PView *elementValueView(const std::string &name, const surfaceMesh &mesh,
@@ -30,5 +32,7 @@ std::vector<double> histogram(const std::vector<double> &values, int bins,
 // x axis labelled `name`, the view named `name`_histogram
 PView *histogramView(const std::string &name, const std::vector<double> &shares,
                      double low, double high);
+
+} // namespace reparam
 
 #endif

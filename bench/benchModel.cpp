@@ -8,6 +8,7 @@
 #include "benchModel.h"
 #include "gmsh.h"
 
+
 classifiedStl loadClassifiedStl(const char *file, int classifyMap)
 {
   gmsh::initialize(0, nullptr, false);

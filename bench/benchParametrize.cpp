@@ -30,6 +30,8 @@
 #include "discretePatch.h"
 #include "gmsh.h"
 
+using namespace reparam;
+
 struct bijectivityCount {
   std::size_t flipped = 0, folds = 0;
 };

@@ -46,6 +46,8 @@
 #include "faceQuality.h"
 #include "reparamReport.h"
 
+using namespace reparam;
+
 namespace {
 
   // The elements of the triangle meshes of the faces pointing against
@@ -76,7 +78,7 @@ namespace {
 
   // Each face against its own input, but the faces optimized together
   // across their curves (Mesh.CompoundOptimize moves triangles across them,
-  // Geo/reparamOptimizeAcrossCuts.h) against their inputs together
+  // Geo/optimize/reparamOptimizeAcrossCuts.h) against their inputs together
   std::size_t countInvertedElements(const std::vector<GFace *> &faces)
   {
     std::set<GFace *> grouped;

@@ -219,7 +219,7 @@ def read_report(path):
     elements); `unmeshedSurfaces` lists those without a parametrization,
     which the mesher skipped, and `inputKeptSurfaces` those meshed with
     their input triangles, by the safety net or after their planar mesh
-    (Geo/reparamReportFormat.cpp)."""
+    (Geo/report/reparamReportFormat.cpp)."""
     try:
         with open(path) as f:
             report = json.load(f)

@@ -30,10 +30,12 @@ flags=(-std=gnu++17 -O1 -g -fno-omit-frame-pointer
   -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
   -DEIGEN_MALLOC_ALREADY_ALIGNED=1 -I"$build/gmsh/Common" -I/usr/include/eigen3
   -I/usr/include/suitesparse)
-for d in Geo Mesh Numeric; do flags+=(-I"$here/$d"); done
+for d in $(find "$here/Geo" "$here/Mesh" "$here/Numeric" -name '*.h' -printf '%h\n' | sort -u); do
+  flags+=(-I"$d")
+done
 for d in Common Geo Mesh Numeric Solver Post contrib/MathEx; do flags+=(-I"$src/$d"); done
-sources=("$here"/Mesh/*.cpp "$here"/Numeric/*.cpp "$here"/Geo/discretePatch.cpp
-  "$here"/Geo/reparamStlInput.cpp "$here"/tests/fuzz/stlLayoutFuzz.cpp)
+sources=($(find "$here/Mesh" "$here/Numeric" -name '*.cpp' | sort)
+  "$here"/Geo/input/reparamStlInput.cpp "$here"/tests/fuzz/stlLayoutFuzz.cpp)
 # each source once, with ccache, both cores
 export CCACHE_BASEDIR=$here CCACHE_NOHASHDIR=1
 cc="clang++"

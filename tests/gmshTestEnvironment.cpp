@@ -12,6 +12,8 @@
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 
+using namespace reparam;
+
 namespace {
 
   class gmshEnvironment : public ::testing::Environment {

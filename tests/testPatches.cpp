@@ -8,6 +8,8 @@
 #include "testPatches.h"
 #include "triangleQuality.h"
 
+using namespace reparam;
+
 testTriangulation
 polarDiskWithHoles(int rings, int sectors,
                    const std::vector<std::array<int, 4> > &holes)

@@ -11,6 +11,8 @@
 #include "SPoint3.h"
 #include "discretePatch.h"
 
+using namespace reparam;
+
 struct testTriangulation {
   std::vector<SPoint3> points;
   std::vector<std::array<int, 3> > triangles;
@@ -78,7 +80,9 @@ testTriangulation sphere(int nLongitude, int nLatitude);
 discretePatch makePatchOrDie(const testTriangulation &t);
 
 // t as the meshes the fidelity measures and the optimizer take
-struct surfaceMesh;
+namespace reparam {
+  struct surfaceMesh;
+}
 surfaceMesh asSurfaceMesh(const testTriangulation &t);
 
 // n x n unit-square quadrangles over [0, n]^2 (z = 0), corners

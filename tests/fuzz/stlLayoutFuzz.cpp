@@ -20,6 +20,8 @@
 #include "patchLayout.h"
 #include "reparamStlInput.h"
 
+using namespace reparam;
+
 namespace {
 
   // Facets read from the bytes as Gmsh's binary reader does: an 80-byte

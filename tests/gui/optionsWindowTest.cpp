@@ -24,6 +24,8 @@
 #include "gmsh.h"
 #include "optionWindow.h"
 
+using namespace reparam;
+
 namespace {
 
   struct image {

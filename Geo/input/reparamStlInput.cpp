@@ -1,0 +1,124 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <array>
+#include <cmath>
+#include <map>
+#include "GmshMessage.h"
+#include "SVector3.h"
+#include "facetOrientation.h"
+#include "reparamOptions.h"
+#include "reparamStlInput.h"
+
+namespace reparam {
+
+namespace {
+
+  bool finite(const SPoint3 &p)
+  {
+    return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+  }
+
+} // namespace
+
+} // namespace reparam
+
+using namespace reparam;
+
+std::size_t
+reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
+                            SBoundingBox3d &bbox)
+{
+  std::size_t dropped = 0;
+  for(std::vector<SPoint3> &solid : points) {
+    std::vector<SPoint3> kept;
+    kept.reserve(solid.size());
+    for(std::size_t i = 0; i + 2 < solid.size(); i += 3) {
+      if(finite(solid[i]) && finite(solid[i + 1]) && finite(solid[i + 2]))
+        kept.insert(kept.end(), solid.begin() + i, solid.begin() + i + 3);
+      else
+        dropped++;
+    }
+    if(solid.size() % 3) {
+      // a file cut in the middle of a facet: its complete facets are read
+      Msg::Warning("Reparam: the STL file ends in the middle of a facet: "
+                   "%lu facets read",
+                   kept.size() / 3);
+    }
+    solid.swap(kept);
+  }
+  std::size_t left = 0, flat = 0;
+  for(const std::vector<SPoint3> &solid : points)
+    for(std::size_t i = 0; i + 2 < solid.size(); i += 3) {
+      left++;
+      const SVector3 n = crossprod(SVector3(solid[i], solid[i + 1]),
+                                   SVector3(solid[i], solid[i + 2]));
+      flat += !(norm(n) > 0.);
+    }
+  if(!left)
+    Msg::Error("Reparam: the STL file has no complete facet with finite "
+               "coordinates: nothing to mesh");
+  else if(flat == left)
+    Msg::Error("Reparam: the %lu facets of the STL file all have zero area: "
+               "nothing to mesh",
+               left);
+  if(!dropped) return 0;
+  bbox.reset();
+  for(const std::vector<SPoint3> &solid : points)
+    for(const SPoint3 &p : solid) bbox += p;
+  Msg::Warning("Reparam: %lu STL facets with a NaN or infinite coordinate "
+               "skipped",
+               dropped);
+  return dropped;
+}
+
+unsigned int reparamCompleteStlFacets(unsigned int facets,
+                                      std::size_t bytesRead)
+{
+  const std::size_t complete = bytesRead / 50;
+  if(complete >= facets) return facets;
+  Msg::Warning("Reparam: the binary STL file is truncated: %lu of its %u "
+               "facets read",
+               complete, facets);
+  return (unsigned int)complete;
+}
+
+std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points)
+{
+  if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
+    return 0;
+  std::size_t reversed = 0, dropped = 0;
+  for(std::vector<SPoint3> &solid : points) {
+    // the corners of neighbouring facets are written with the same
+    // coordinates: nodes by exact coordinates (Gmsh merges them after)
+    std::map<std::array<double, 3>, int> index;
+    std::vector<std::array<int, 3> > facets(solid.size() / 3);
+    for(std::size_t i = 0; i < 3 * facets.size(); i++) {
+      const std::array<double, 3> key = {
+        {solid[i].x(), solid[i].y(), solid[i].z()}};
+      facets[i / 3][i % 3] =
+        index.insert(std::make_pair(key, (int)index.size())).first->second;
+    }
+    const facetRepair r = orientFacets(facets);
+    if(!r.reversed && !r.dropped) continue;
+    std::vector<SPoint3> kept;
+    kept.reserve(solid.size());
+    for(std::size_t f = 0; f < facets.size(); f++) {
+      if(r.drop[f]) continue;
+      const SPoint3 *c = &solid[3 * f];
+      if(r.reverse[f])
+        kept.insert(kept.end(), {c[0], c[2], c[1]});
+      else
+        kept.insert(kept.end(), {c[0], c[1], c[2]});
+    }
+    solid.swap(kept);
+    reversed += r.reversed;
+    dropped += r.dropped;
+  }
+  if(reversed || dropped)
+    Msg::Warning("Reparam: STL input repaired: %lu facets turned to agree "
+                 "with their neighbours, %lu facets repeating another's "
+                 "nodes dropped",
+                 reversed, dropped);
+  return reversed + dropped;
+}
+

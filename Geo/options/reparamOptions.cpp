@@ -1,0 +1,182 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include <cmath>
+#include "GmshMessage.h"
+#include "Options.h"
+#include "reparamOptions.h"
+#include "reparamOptionsWindow.h"
+
+namespace reparam {
+
+reparamOptions &getReparamOptions()
+{
+  static reparamOptions options;
+  return options;
+}
+
+const char *compoundParametrizationName(int value)
+{
+  switch(value) {
+  case 0: return "Gmsh built-in mean value";
+  case 1: return "finite element harmonic";
+  case 2: return "barycentric (Tutte)";
+  case 3: return "mean value";
+  case 4: return "finite element conformal (LSCM)";
+  case 5: return "spectral conformal";
+  case 6: return "automatic";
+  }
+  return "unknown";
+}
+
+} // namespace reparam
+
+using namespace reparam;
+
+double opt_mesh_compound_parametrization(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) {
+    int value = (int)val;
+    if(value != val || value < 0 || value > 6)
+      Msg::Error("Mesh.CompoundParametrization must be an integer from 0 to "
+                 "6 (got %g): keeping %d (%s)",
+                 val, o.parametrization,
+                 compoundParametrizationName(o.parametrization));
+    else
+      o.parametrization = value;
+  }
+  if(action & GMSH_GUI)
+    showInOptionsWindow(compoundWidget::parametrization, o.parametrization);
+  return o.parametrization;
+}
+
+namespace reparam {
+
+// The on/off options: any nonzero value sets them
+static double onOffOption(bool &option, int action, double val)
+{
+  if(action & GMSH_SET) option = (val != 0.);
+  return option ? 1. : 0.;
+}
+
+// ... and those the options window shows
+static double onOffOption(bool &option, compoundWidget widget, int action,
+                          double val)
+{
+  const double value = onOffOption(option, action, val);
+  if(action & GMSH_GUI) showInOptionsWindow(widget, value);
+  return value;
+}
+
+} // namespace reparam
+
+double opt_mesh_compound_fill_holes(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().fillHoles, compoundWidget::fillHoles,
+                     action, val);
+}
+
+double opt_mesh_compound_repair(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().repair, compoundWidget::repair, action,
+                     val);
+}
+
+double opt_mesh_compound_split(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().split, compoundWidget::split, action,
+                     val);
+}
+
+double opt_mesh_compound_layout(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().layout, action, val);
+}
+
+double opt_mesh_compound_curve_corners(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().curveCorners, action, val);
+}
+
+double opt_mesh_compound_optimize(OPT_ARGS_NUM)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) {
+    const int value = (int)val;
+    if(value != val || value < 0 || value > 2)
+      Msg::Error("Mesh.CompoundOptimize must be 0, 1 or 2 (got %g): keeping "
+                 "%d",
+                 val, o.optimize);
+    else
+      o.optimize = value;
+  }
+  if(action & GMSH_GUI)
+    showInOptionsWindow(compoundWidget::optimize, o.optimize);
+  return o.optimize;
+}
+
+namespace reparam {
+
+namespace {
+
+  // A finite value >= 0, else an error and the old value kept
+  double nonNegativeOption(double &value, const char *name, int action,
+                           double val)
+  {
+    if(action & GMSH_SET) {
+      if(!(val >= 0.) || !std::isfinite(val))
+        Msg::Error("Mesh.%s must be >= 0 (got %g): keeping %g", name, val,
+                   value);
+      else
+        value = val;
+    }
+    return value;
+  }
+
+} // namespace
+
+} // namespace reparam
+
+double opt_mesh_compound_curvature_metric(OPT_ARGS_NUM)
+{
+  const double value =
+    nonNegativeOption(getReparamOptions().curvatureMetric,
+                      "CompoundCurvatureMetric", action, val);
+  if(action & GMSH_GUI)
+    showInOptionsWindow(compoundWidget::curvatureMetric, value);
+  return value;
+}
+
+double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
+{
+  return nonNegativeOption(getReparamOptions().noiseSize, "CompoundNoiseSize",
+                           action, val);
+}
+
+double opt_mesh_compound_mesh_size_gradient(OPT_ARGS_NUM)
+{
+  return nonNegativeOption(getReparamOptions().meshSizeGradient,
+                           "CompoundMeshSizeGradient", action, val);
+}
+
+double opt_mesh_compound_mesh_size_from_strips(OPT_ARGS_NUM)
+{
+  double v = getReparamOptions().meshSizeFromStrips;
+  nonNegativeOption(v, "CompoundMeshSizeFromStrips", action, val);
+  getReparamOptions().meshSizeFromStrips = v > 0.;
+  return getReparamOptions().meshSizeFromStrips;
+}
+
+double opt_mesh_compound_report(OPT_ARGS_NUM)
+{
+  return onOffOption(getReparamOptions().report, compoundWidget::report, action,
+                     val);
+}
+
+std::string opt_mesh_compound_report_file(OPT_ARGS_STR)
+{
+  reparamOptions &o = getReparamOptions();
+  if(action & GMSH_SET) o.reportFile = val;
+  return o.reportFile;
+}
+

@@ -1,0 +1,44 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// What Reparam's parametrization hook offers besides the hook itself
+// (declared in Gmsh's Geo/GModelParametrize.h by patches/0001).
+
+#ifndef REPARAM_PARAMETRIZE_H
+#define REPARAM_PARAMETRIZE_H
+
+#include <string>
+#include <vector>
+#include "SPoint2.h"
+#include "SPoint3.h"
+
+class MTriangle;
+
+namespace reparam {
+
+// Drops the maps the patch layout kept for CreateGeometry (at the start of
+// a new layout)
+void reparamForgetLayoutMaps();
+
+// The parametrization CreateGeometry would compute for these triangles,
+// computed without a word in the log (the patch layout tries hundreds of
+// parts): 1 with the (u, v) and 3D points of the nodes and the triangles'
+// node indices when it is one-to-one, else -1 and the reason in `why`; 0
+// when Mesh.CompoundParametrization = 0 leaves it to Gmsh.
+int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
+                              std::vector<SPoint2> &uv,
+                              std::vector<SPoint3> &xyz,
+                              std::vector<int> &triangleNodes,
+                              std::string &why);
+
+// Whether every hole of these triangles (inner boundary loop) can be
+// filled on its mean plane, as the parametrization fills them
+// (Mesh.CompoundFillHoles; true without it, or without holes): false means
+// reparamTryParametrization fails for that reason, whatever its maps give
+bool reparamHolesFillable(const std::vector<MTriangle *> &triangles);
+
+// Why the last parametrization failed (for the safety net's warning)
+std::string reparamLastFailure();
+
+} // namespace reparam
+
+#endif

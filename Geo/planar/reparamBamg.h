@@ -1,0 +1,56 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Reparam's side of BAMG (Mesh.Algorithm = 7; hooks in meshGFaceBamg,
+// patches/0023).
+//
+// The most vertices BAMG may make for a face: BAMG builds its arrays for
+// that many at each of its calls, their constructors touching every page,
+// 900000 by default whatever the face. On a segmentation-like STL of 2317
+// faces (bench/make-segmentations.py, bone_binary) Mesh 2 took 279 s of
+// wall time for 83 s of CPU in Gmsh's count (66 s of system time, 29
+// million page faults in 100 s), each of BAMG's 5009 calls some 56 ms, on
+// faces of 9 to 100 vertices.
+//
+// A face whose BAMG mesh fails: BAMG meshes the face Gmsh's Delaunay mesher
+// meshed first, and gave up on some faces of the segmentation-like STLs
+// (`we loss some 1 edges ... Fatal error in the meshgenerator 1100`: one
+// face of vessel_slices), which Gmsh reports as an error, the face keeping
+// that first mesh.
+
+#ifndef REPARAM_BAMG_H
+#define REPARAM_BAMG_H
+
+class GFace;
+
+namespace reparam {
+
+// For a face of `vertices` vertices (the mesh BAMG starts from): 32 times
+// that, at least 20000 and at most BAMG's 900000. BAMG refines that mesh to
+// the metric, and stops inserting points at the bound: on the 33 meshes of
+// bench/RESULTS-meshers.md, with and without Mesh.CompoundCurvatureMetric
+// (bench/RESULTS-anisotropic.md), no face made more than 5336 vertices
+long bamgMaxVertices(long vertices);
+
+} // namespace reparam
+
+// BAMG's argument for gf's mesh of `vertices` vertices: bamgMaxVertices for
+// a face Reparam parametrized; -1.1e100 (BAMG's default) for the others
+double reparamBamgMaxVertices(GFace *gf, int vertices);
+
+// Called when BAMG failed on gf: for a face Reparam parametrized, logs that
+// it is meshed by Delaunay instead (a warning where that loses the
+// anisotropy of Mesh.CompoundCurvatureMetric, else information), notes it
+// for takeBamgFailure and returns true; false for the others (Gmsh's
+// error). The face holds the mesh BAMG started from, which Delaunay made
+// under BAMG's global algorithm, without the sizes
+bool reparamBamgFailed(GFace *gf);
+
+namespace reparam {
+
+// Whether BAMG failed on gf since the last call (then forgotten): the
+// validity hook meshes it again (Geo/planar/reparamMeshValidity.cpp)
+bool takeBamgFailure(const GFace *gf);
+
+} // namespace reparam
+
+#endif

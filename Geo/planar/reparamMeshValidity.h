@@ -1,0 +1,61 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Whether Gmsh may throw away a Delaunay or Frontal-Delaunay mesh of a face
+// Reparam parametrized (hook in meshGFace, patches/0008). Gmsh remeshes a
+// non-planar face with MeshAdapt as soon as one element disagrees with the
+// normals of the input under its nodes; on scans those few elements cross
+// folds thinner than the mesh size, which MeshAdapt crosses too (camelhead:
+// 9 of 16999 elements with Frontal-Delaunay in 0.4 s; 27 with MeshAdapt in
+// 35 s, Hausdorff distance 0.45 % -> 1.8 %).
+
+#ifndef REPARAM_MESH_VALIDITY_H
+#define REPARAM_MESH_VALIDITY_H
+
+#include <cstddef>
+
+class GFace;
+
+namespace reparam {
+
+// Elements of gf's triangles whose normal disagrees with the sum of the
+// face's normals at their nodes (Gmsh's test), counted against the
+// orientation most of them have
+std::size_t countElementsAgainstFaceNormals(GFace *gf);
+
+} // namespace reparam
+
+// For a discrete face Reparam parametrized (else false, and Gmsh's test
+// decides): first optimizes it (Mesh.CompoundOptimize, which turns back the
+// triangles pointing against the input), then splits the edges of those
+// left (Geo/planar/invertedElementRepair), then true if none is left; else tries
+// the other planar mesher (Geo/planar/reparamMesherFallback.h), then the input's
+// own triangles (Geo/parametrize/reparamInputMesh.h); true if at most 1 % of the
+// elements fail Gmsh's test: the mesh is kept (logged). A mesh with edges
+// longer than twice the size (countLongEdges) is compared with MeshAdapt's.
+// A quadrangle mesh (Blossom's) is kept when at most 1 % of its elements
+// point against the input
+bool reparamKeepPlanarMesh(GFace *gf);
+
+namespace reparam {
+
+// The segments of gf's curves its triangles use fewer times than the curve
+// bounds it (once; twice for a curve on both sides, a slit, and for an
+// embedded curve)
+std::size_t countUnusedCurveSegments(GFace *gf);
+
+// The edges of gf's triangles longer than twice the size asked at their
+// ends (BGM_MeshSize without the grading from short curves, which the
+// meshers follow loosely): where the planar mesher put no node inside the
+// face (the optimization splits those longer than 1.6 times the size)
+std::size_t countLongEdges(GFace *gf);
+
+} // namespace reparam
+
+// For a discrete face Reparam parametrized: whether its planar mesh leaves
+// a segment of its curves unused, a hole at it (Frontal-Delaunay across a
+// slit: a curve gmsh2x_car_body's face 7 has on both sides), after the
+// other planar mesher was tried (Geo/planar/reparamMesherFallback.h); logged, and
+// Gmsh remeshes it with MeshAdapt
+bool reparamPlanarMeshLeavesHole(GFace *gf);
+
+#endif

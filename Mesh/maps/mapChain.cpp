@@ -1,0 +1,101 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+
+#include "OS.h"
+#include "barycentricMap.h"
+#include "conformalMap.h"
+#include "harmonicMap.h"
+#include "mapChain.h"
+#include "meanValueMap.h"
+#include "reparamOptions.h"
+#include "spectralConformalMap.h"
+
+namespace reparam {
+
+std::vector<mapStep> mapChain(int choice)
+{
+  const mapStep harmonic{(int)compoundParametrization::harmonic,
+                         [](const discretePatch &p) { return harmonicMap(p); },
+                         false};
+  const mapStep barycentric{
+    (int)compoundParametrization::barycentric,
+    [](const discretePatch &p) { return barycentricMap(p); }, false};
+  const mapStep meanValue{
+    (int)compoundParametrization::meanValue,
+    [](const discretePatch &p) { return meanValueMap(p); }, false};
+  const mapStep conformal{
+    (int)compoundParametrization::conformal,
+    [](const discretePatch &p) { return conformalMap(p); }, true};
+  const mapStep spectral{
+    (int)compoundParametrization::spectral,
+    [](const discretePatch &p) { return spectralConformalMap(p); }, true};
+  // The paper's advice when a conformal map folds: pins from the inertia
+  const mapStep conformalRepinned{(int)compoundParametrization::conformal,
+                                  [](const discretePatch &p) {
+                                    return conformalMap(p,
+                                                        principalAxisPins(p));
+                                  },
+                                  true};
+  switch((compoundParametrization)choice) {
+  case compoundParametrization::harmonic: return {harmonic};
+  case compoundParametrization::barycentric: return {barycentric};
+  case compoundParametrization::meanValue: return {meanValue};
+  case compoundParametrization::conformal: return {conformal};
+  case compoundParametrization::spectral: return {spectral};
+  case compoundParametrization::automatic:
+    return {spectral, conformalRepinned, meanValue};
+  default: return {};
+  }
+}
+
+checkedMap runMapChain(const discretePatch &patch,
+                       const std::vector<mapStep> &steps, bool repair)
+{
+  checkedMap result;
+  std::size_t fewestDegenerate = (std::size_t)-1;
+  for(std::size_t s = 0; s < steps.size(); s++) {
+    mapAttempt attempt;
+    attempt.map = steps[s].map;
+    double t0 = TimeOfDay();
+    patchMap map = steps[s].compute(patch);
+    double t1 = TimeOfDay();
+    attempt.mapTime = t1 - t0;
+    attempt.error = map.error;
+    if(map.error.ok()) {
+      bijectivityReport report = checkBijectivity(patch, map.uv);
+      attempt.flipped = report.flippedTriangles.size();
+      attempt.folds = report.numFolds;
+      attempt.degenerate = report.degenerateTriangles.size();
+      if(repair && attempt.flipped) {
+        attempt.repairTried = true;
+        attempt.repair =
+          repairFlips(patch, map.uv, report.orientation, steps[s].freeBoundary);
+        // boundary moves may cross the boundary: check everything again
+        report = checkBijectivity(patch, map.uv);
+      }
+      attempt.flippedAfter = report.flippedTriangles.size();
+      attempt.foldsAfter = report.numFolds;
+      attempt.degenerateAfter = report.degenerateTriangles.size();
+    }
+    attempt.checkTime = TimeOfDay() - t1;
+    result.attempts.push_back(attempt);
+    if(!map.error.ok()) continue;
+    // a one-to-one result beats any other; among them, fewer degenerate
+    // triangles; without any, the last map that worked
+    const bool better =
+      attempt.bijective() ?
+        (!result.bijective || attempt.degenerateAfter < fewestDegenerate) :
+        !result.bijective;
+    if(better) {
+      result.map = std::move(map);
+      result.chosen = (int)s;
+      result.bijective = attempt.bijective();
+      if(result.bijective) fewestDegenerate = attempt.degenerateAfter;
+    }
+    if(result.bijective && fewestDegenerate == 0) break;
+  }
+  if(result.chosen < 0 && !result.attempts.empty())
+    result.map.error = result.attempts.back().error;
+  return result;
+}
+} // namespace reparam
+

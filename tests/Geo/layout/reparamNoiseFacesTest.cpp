@@ -1,0 +1,109 @@
+// Reparam - faces narrower than a quarter of their mesh size: their curves
+// are crossed by the optimization, their slivers mended
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <gtest/gtest.h>
+#include "GFace.h"
+#include "GModel.h"
+#include "MTriangle.h"
+#include "gmsh.h"
+#include "gmshTestEnvironment.h"
+#include "meshFidelity.h"
+#include "reparamLayout.h"
+#include "reparamNoiseFaces.h"
+#include "testPatches.h"
+#include "triangleQuality.h"
+
+using namespace reparam;
+
+namespace {
+
+  // A plate with a step: flat for x in [0, 1], a strip `width` wide rising
+  // at 60 degrees, flat again for one more unit; 1 wide along y. Its two
+  // creases (60 degrees) bound the strip as a feature patch, on a grid of
+  // half the strip's width
+  testTriangulation steppedPlate(double width)
+  {
+    const double step = 0.5 * width, length = 2. + width;
+    testTriangulation t = rectangleGrid(
+      (int)std::lround(length / step), (int)std::lround(1. / step), length, 1.);
+    const double c = std::cos(M_PI / 3.), s = std::sin(M_PI / 3.);
+    for(SPoint3 &p : t.points) {
+      const double x = p.x();
+      if(x <= 1.)
+        p = SPoint3(x, p.y(), 0.);
+      else if(x <= 1. + width + 1e-12)
+        p = SPoint3(1. + (x - 1.) * c, p.y(), (x - 1.) * s);
+      else
+        p = SPoint3(1. + width * c + (x - 1. - width), p.y(), width * s);
+    }
+    return t;
+  }
+
+  double worstKappa()
+  {
+    double worst = 1.;
+    GModel *m = GModel::current();
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it)
+      for(MTriangle *t : (*it)->triangles)
+        worst = std::min(worst, triangleKappa(t->getVertex(0)->point(),
+                                              t->getVertex(1)->point(),
+                                              t->getVertex(2)->point()));
+    return worst;
+  }
+
+  bool logHas(const std::vector<std::string> &log, const std::string &what)
+  {
+    for(const std::string &l : log)
+      if(l.find(what) != std::string::npos) return true;
+    return false;
+  }
+
+} // namespace
+
+TEST(noiseFaces, widthIsTwiceTheAreaOverTheBoundary)
+{
+  // a 1 x 0.1 rectangle of two triangles: 2 * 0.1 / 2.2
+  surfaceMesh strip;
+  strip.points = {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(1, 0.1, 0),
+                  SPoint3(0, 0.1, 0)};
+  strip.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+  EXPECT_NEAR(triangulationWidth(strip), 0.2 / 2.2, 1e-12);
+  double area, length;
+  areaAndBoundaryLength(strip.points, {0, 1, 2, 0, 2, 3}, area, length);
+  EXPECT_NEAR(area, 0.1, 1e-12);
+  EXPECT_NEAR(length, 2.2, 1e-12);
+  EXPECT_EQ(triangulationWidth(surfaceMesh()), 0.);
+  // a closed tetrahedron has no boundary
+  surfaceMesh closed;
+  closed.points = {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(0, 1, 0),
+                   SPoint3(0, 0, 1)};
+  closed.triangles = {{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}}};
+  EXPECT_GT(triangulationWidth(closed), 1e299);
+}
+
+TEST(noiseFaces, aStripNarrowerThanAQuarterOfTheSizeIsCrossed)
+{
+  // strip 0.04 wide, meshed at 0.25: its curves' nodes alone would make
+  // triangles of kappa about 0.3 across it
+  const std::vector<std::string> log =
+    remeshWithRecipe(steppedPlate(0.04), 0.25);
+  EXPECT_FALSE(logHas(log, "Error"));
+  EXPECT_TRUE(logHas(log, "narrower than a quarter of the mesh size"));
+  EXPECT_GT(worstKappa(), 0.5); // measured 0.678; 0.334 with its curves kept
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  std::size_t nonManifold = 0;
+  freeMeshEdges(&nonManifold);
+  EXPECT_EQ(nonManifold, 0u);
+}
+
+TEST(noiseFaces, aStripWiderThanThatKeepsItsCurves)
+{
+  // the same strip meshed at 0.1: 0.4 of the size, no noise
+  const std::vector<std::string> log =
+    remeshWithRecipe(steppedPlate(0.04), 0.1);
+  EXPECT_FALSE(logHas(log, "narrower than a quarter of the mesh size"));
+  EXPECT_TRUE(reparamNoiseFaceCurves(GModel::current()).empty());
+}
