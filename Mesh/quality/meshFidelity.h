@@ -10,20 +10,11 @@
 #include <array>
 #include <vector>
 #include "SPoint3.h"
+#include "surfaceMesh.h"
 
 class GFace;
 
 namespace reparam {
-
-struct surfaceMesh {
-  std::vector<SPoint3> points;
-  std::vector<std::array<int, 3> > triangles;
-  std::vector<std::array<int, 4> > quadrangles;
-  std::size_t numElements() const
-  {
-    return triangles.size() + quadrangles.size();
-  }
-};
 
 // The triangles and quadrangles of a meshed face
 surfaceMesh surfaceMeshOf(const GFace *gf);
