@@ -16,6 +16,7 @@
 #include "edgeByCoordinates.h"
 #include "gradedCurveNodes.h"
 #include "reparamCurveMesh.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamSizeGrading.h"
 

@@ -42,10 +42,4 @@ bool reparamInputPolyline(GEdge *ge, std::vector<SPoint3> &polyline);
 
 } // namespace reparam
 
-// nodes: the curve's mesh nodes without its end points, in order along it.
-// Does nothing unless ge is a discrete curve, Reparam computes the
-// parametrizations (Mesh.CompoundParametrization > 0) and
-// Mesh.CompoundCurveCorners = 1.
-void reparamSnapCurveMesh(GEdge *ge, std::vector<MVertex *> &nodes);
-
 #endif

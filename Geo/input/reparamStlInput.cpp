@@ -6,6 +6,7 @@
 #include "GmshMessage.h"
 #include "SVector3.h"
 #include "facetOrientation.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamStlInput.h"
 

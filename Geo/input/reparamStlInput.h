@@ -22,16 +22,4 @@ std::size_t
 reparamDropInvalidStlFacets(std::vector<std::vector<SPoint3> > &points,
                             SBoundingBox3d &bbox);
 
-// With Reparam's maps (Mesh.CompoundParametrization > 0 when the file is
-// merged): the facets of each solid turned to agree with their neighbours
-// and those repeating another's nodes dropped (Mesh/checks/facetOrientation.h),
-// with one warning; returns how many facets changed
-std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points);
-
-// The facets of a binary STL read when `bytesRead` of the `facets` * 50
-// bytes announced were there: all of them, or the complete ones of a file
-// cut short (with a warning; Gmsh read none)
-unsigned int reparamCompleteStlFacets(unsigned int facets,
-                                      std::size_t bytesRead);
-
 #endif

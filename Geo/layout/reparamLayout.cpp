@@ -24,6 +24,7 @@
 #include "patchLayout.h"
 #include "reparamConePoints.h"
 #include "reparamCurveMesh.h"
+#include "reparamHooks.h"
 #include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"

@@ -58,11 +58,6 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles);
 // three cut edges or more of the last layout meet there (two boundary loops
 // touching, a cut ending on another), so that the curves through it share
 // a model point and their meshes meet there
-} // namespace reparam
-
-bool reparamBreakCurveAt(MVertex *v);
-
-namespace reparam {
 // Forgets the last layout's nodes (CreateGeometry: the curves are made)
 void reparamForgetJunctions();
 

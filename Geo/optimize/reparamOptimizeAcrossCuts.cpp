@@ -16,6 +16,7 @@
 #include "meshFidelity.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceEdits.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamNoiseFaces.h"
 #include "reparamOptimizableMesh.h"

@@ -53,10 +53,4 @@ std::vector<cutGroup> facesJoinedByCuts(GModel *m,
 
 } // namespace reparam
 
-// Optimizes the meshes of each group as one, unless Mesh.CompoundOptimize
-// is 0 or the group's meshes were left by this already; logs what it did
-// and updates the faces' optimization records and reports. Returns the
-// number of groups changed
-int reparamOptimizeMeshedModel(GModel *m);
-
 #endif

@@ -11,6 +11,7 @@
 #include "closestTriangle.h"
 #include "meshFidelity.h"
 #include "reparamCurveMesh.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamCurvatureMetric.h"

@@ -13,12 +13,4 @@
 
 class GFace;
 
-// Optimizes the triangles of discrete face gf if Reparam parametrized it,
-// Mesh.CompoundOptimize is on, its mesh has no quadrangle and is not the
-// one it left already (the validity hook, Geo/planar/reparamMeshValidity.h, runs
-// it first on Delaunay and Frontal-Delaunay meshes); logs what it did and
-// records it for the report (findOptimization). False (nothing done)
-// otherwise
-bool reparamOptimizeMeshedFace(GFace *gf);
-
 #endif

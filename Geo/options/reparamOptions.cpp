@@ -3,6 +3,7 @@
 #include <cmath>
 #include "GmshMessage.h"
 #include "Options.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamOptionsWindow.h"
 

@@ -1,6 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include "GmshConfig.h"
+#include "reparamHooks.h"
 #include "reparamOptionsWindow.h"
 #if defined(HAVE_FLTK)
 #include "Context.h"

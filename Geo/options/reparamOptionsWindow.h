@@ -32,10 +32,4 @@ void showInOptionsWindow(compoundWidget widget, double value);
 // which calls reparamApplyCompoundTab
 } // namespace reparam
 
-void reparamAddCompoundTab(optionWindow *o, int x, int y, int w, int h, int bw,
-                           void (*changed)(Fl_Widget *, void *));
-
-// The options set from the tab's widgets
-void reparamApplyCompoundTab(optionWindow *o);
-
 #endif

@@ -15,6 +15,7 @@
 #include "SBoundingBox3d.h"
 #include "boundaryStitch.h"
 #include "meshFidelity.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
@@ -59,8 +60,6 @@ namespace {
     static std::map<const GFace *, inputTriangulation> faces;
     return faces;
   }
-
-  GFace *faceInCreation = nullptr;
 
   // keptFaces and inputMeshedFaces: faces are meshed in parallel (OpenMP
   // builds), and a face's fallback to its input (reparamMeshFaceWithItsInput)
@@ -236,23 +235,10 @@ void reparamBeginFaceGeometry(GFace *gf)
 {
   std::lock_guard<std::mutex> lock(facesMutex());
   keptFaces().erase(gf);
-  faceInCreation = gf;
 }
-
-namespace reparam {
-
-GFace *reparamTakeFaceInCreation()
-{
-  GFace *creating = faceInCreation;
-  faceInCreation = nullptr;
-  return creating;
-}
-
-} // namespace reparam
 
 bool reparamKeepInputMesh(GFace *gf)
 {
-  faceInCreation = nullptr;
   const std::string reason = reparamLastFailure();
   if(getReparamOptions().parametrization ==
        (int)compoundParametrization::gmsh ||

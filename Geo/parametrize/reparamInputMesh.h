@@ -18,38 +18,7 @@
 class GFace;
 class GModel;
 
-// Called by discreteFace::createGeometry when gf's input has triangles of
-// gamma below 1e-3 (minGamma the lowest): with Reparam's maps, which take
-// slivers (flip and fold checks, the map chain), an Info naming the
-// surface and true (no Gmsh warning then); false with Gmsh's own map
-bool reparamTakesPoorInput(GFace *gf, double minGamma);
-
-// Called by discreteFace::createGeometry before it parametrizes gf: a
-// failure of Reparam's maps is then no error, the reason kept for the
-// warning of reparamKeepInputMesh
-void reparamBeginFaceGeometry(GFace *gf);
-
 namespace reparam {
-// The face whose CreateGeometry called the parametrization hook, if one
-// did (the hook asks once, on entry: a failure then is an Info, the reason
-// kept), else null
-GFace *reparamTakeFaceInCreation();
-
-} // namespace reparam
-
-// Called when gf's parametrization failed: keeps a copy of its input
-// triangles and warns with the reason of the failure, true; false when
-// Reparam is not the one that parametrizes (Gmsh's own map), CreateGeometry
-// then reports its error
-bool reparamKeepInputMesh(GFace *gf);
-
-// Called by discreteFace::mesh: meshes a face kept above with its input
-// triangles, stitched to the nodes of its curves' 1D meshes; false for other
-// faces
-bool reparamMeshFromInput(GFace *gf);
-
-namespace reparam {
-
 // Called when gf's planar mesh keeps `against` triangles pointing against
 // the input after every repair: meshes gf with its input triangles
 // stitched to its curves' nodes, with one warning, if that leaves no more

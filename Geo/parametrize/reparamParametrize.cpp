@@ -21,6 +21,7 @@
 #include "parametrize.h"
 #include "reparamConePoints.h"
 #include "reparamCreaseCurves.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamLayout.h"
 #include "reparamOptions.h"
@@ -354,20 +355,19 @@ bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
 
 using namespace reparam;
 
-int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
-                                  std::vector<MVertex *> &nodes,
-                                  std::vector<SPoint2> &stl_vertices_uv,
-                                  std::vector<SPoint3> &stl_vertices_xyz,
-                                  std::vector<int> &stl_triangles)
+int reparamComputeFaceParametrization(GFace *gf,
+                                      const std::vector<MTriangle *> &triangles,
+                                      std::vector<MVertex *> &nodes,
+                                      std::vector<SPoint2> &stl_vertices_uv,
+                                      std::vector<SPoint3> &stl_vertices_xyz,
+                                      std::vector<int> &stl_triangles)
 {
   mapRequest r;
-  r.face = reparamTakeFaceInCreation();
-  if(r.face) {
-    r.caller = mapCaller::face;
-    // the curves are made once faces get their geometry: the layout's
-    // junctions are of no more use (and their nodes may go)
-    reparamForgetJunctions();
-  }
+  r.caller = mapCaller::face;
+  r.face = gf;
+  // the curves are made once faces get their geometry: the layout's
+  // junctions are of no more use (and their nodes may go)
+  reparamForgetJunctions();
   // whatever happens below, an earlier record for these arrays is stale
   recordParametrization(stl_vertices_uv, nullptr);
   parametrizationRecord record;
@@ -377,13 +377,28 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                 result);
   if(done <= 0) return done;
   recordParametrization(stl_vertices_uv, &record);
-  if(r.face) {
-    // the face's tips become mesh nodes (points embedded in it), and its
-    // sharp creases left inside it embedded curves
-    reparamEmbedConePoints(r.face, nodes, stl_vertices_xyz, stl_triangles);
-    reparamEmbedCreaseCurves(r.face, nodes, stl_vertices_xyz, stl_triangles);
-  }
+  // the face's tips become mesh nodes (points embedded in it), and its
+  // sharp creases left inside it embedded curves
+  reparamEmbedConePoints(gf, nodes, stl_vertices_xyz, stl_triangles);
+  reparamEmbedCreaseCurves(gf, nodes, stl_vertices_xyz, stl_triangles);
   return 1;
+}
+
+int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
+                                  std::vector<MVertex *> &nodes,
+                                  std::vector<SPoint2> &stl_vertices_uv,
+                                  std::vector<SPoint3> &stl_vertices_xyz,
+                                  std::vector<int> &stl_triangles)
+{
+  recordParametrization(stl_vertices_uv, nullptr);
+  mapRequest r; // mapCaller::gmsh
+  parametrizationRecord record;
+  parametrization result;
+  const int done = mapTriangles(r, triangles, nodes, stl_vertices_uv,
+                                stl_vertices_xyz, stl_triangles, record,
+                                result);
+  if(done > 0) recordParametrization(stl_vertices_uv, &record);
+  return done;
 }
 
 int reparamCheckParametrizable(const std::vector<MTriangle *> &triangles,

@@ -9,6 +9,7 @@
 #include "MTriangle.h"
 #include "SPoint2.h"
 #include "SPoint3.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamUvLocate.h"
 #include "uvTriangleTree.h"

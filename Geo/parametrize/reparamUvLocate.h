@@ -26,26 +26,6 @@ class MElementOctree;
 class MTriangle;
 class reparamUvLocator;
 
-// A locator of t2d's triangles (a discrete face's (u, v) triangulation,
-// which must not move while it is used); null with Gmsh's own map
-reparamUvLocator *reparamNewUvLocator(const std::vector<MTriangle> &t2d);
-
-void reparamDeleteUvLocator(reparamUvLocator *locator);
-
-// The triangle of t2d holding (u, v) (as Gmsh's octree finds it, strictly:
-// barycentric coordinates within 1e-6), by the locator if any, else by
-// Gmsh's octree; null if none
-MElement *reparamFindUvTriangle(const reparamUvLocator *locator,
-                                const MElementOctree *octree,
-                                const std::vector<MTriangle> &t2d, double u,
-                                double v);
-
-// The triangle of t2d (a discrete face's (u, v) triangles) closest to
-// (u, v), which is moved onto it; null if t2d is empty. Meant for points
-// outside every triangle: it only searches the triangles on the boundary.
-MTriangle *reparamClosestUvTriangle(const std::vector<MTriangle> &t2d,
-                                    double &u, double &v);
-
 class SPoint2;
 class SPoint3;
 
@@ -58,7 +38,5 @@ namespace reparam {
 } // namespace reparam
 
 SPoint2
-reparamParFromPoint(const reparamUvLocator *locator, const SPoint3 &p,
-                    const std::function<SPoint2(const SPoint3 &)> &search);
 
 #endif

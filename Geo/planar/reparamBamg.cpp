@@ -7,6 +7,7 @@
 #include "GmshMessage.h"
 #include "reparamBamg.h"
 #include "reparamCurvatureMetric.h"
+#include "reparamHooks.h"
 #include "reparamReport.h"
 
 namespace reparam {

@@ -31,22 +31,6 @@ namespace reparam {
 // (bench/RESULTS-anisotropic.md), no face made more than 5336 vertices
 long bamgMaxVertices(long vertices);
 
-} // namespace reparam
-
-// BAMG's argument for gf's mesh of `vertices` vertices: bamgMaxVertices for
-// a face Reparam parametrized; -1.1e100 (BAMG's default) for the others
-double reparamBamgMaxVertices(GFace *gf, int vertices);
-
-// Called when BAMG failed on gf: for a face Reparam parametrized, logs that
-// it is meshed by Delaunay instead (a warning where that loses the
-// anisotropy of Mesh.CompoundCurvatureMetric, else information), notes it
-// for takeBamgFailure and returns true; false for the others (Gmsh's
-// error). The face holds the mesh BAMG started from, which Delaunay made
-// under BAMG's global algorithm, without the sizes
-bool reparamBamgFailed(GFace *gf);
-
-namespace reparam {
-
 // Whether BAMG failed on gf since the last call (then forgotten): the
 // validity hook meshes it again (Geo/planar/reparamMeshValidity.cpp)
 bool takeBamgFailure(const GFace *gf);

@@ -4,6 +4,7 @@
 #include "reparamCreaseCurves.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamFaceMeshing.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"

@@ -3,6 +3,7 @@
 #include "GFace.h"
 #include "GmshDefines.h"
 #include "GmshMessage.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamMeshAdaptCheck.h"
 #include "reparamMesherFallback.h"

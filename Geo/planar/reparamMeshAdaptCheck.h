@@ -15,16 +15,4 @@
 
 class GFace;
 
-// For a discrete face Reparam parametrized and meshed by MeshAdapt (hook in
-// meshGFace, patches/0022; nothing for another mesher or while a mesher is
-// tried in place of another): a triangle mesh is first optimized
-// (Mesh.CompoundOptimize turns back the triangles against the input); then
-// if the mesh leaves a segment of the face's curves unused or elements
-// against the input, Delaunay's mesh and then Frontal-Delaunay's are tried
-// (Geo/planar/reparamMesherFallback.h), each kept if it has fewer defects, and a
-// triangle mesh still against the input is compared with the input's own
-// triangles (Geo/parametrize/reparamInputMesh.h); logged. Returns whether the mesh was
-// replaced
-bool reparamCheckMeshAdaptMesh(GFace *gf);
-
 #endif

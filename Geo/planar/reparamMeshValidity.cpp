@@ -18,6 +18,7 @@
 #include "invertedElementRepair.h"
 #include "meshFidelity.h"
 #include "reparamBamg.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamMesherFallback.h"
 #include "reparamMeshValidity.h"

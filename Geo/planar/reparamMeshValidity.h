@@ -22,22 +22,6 @@ namespace reparam {
 // orientation most of them have
 std::size_t countElementsAgainstFaceNormals(GFace *gf);
 
-} // namespace reparam
-
-// For a discrete face Reparam parametrized (else false, and Gmsh's test
-// decides): first optimizes it (Mesh.CompoundOptimize, which turns back the
-// triangles pointing against the input), then splits the edges of those
-// left (Geo/planar/invertedElementRepair), then true if none is left; else tries
-// the other planar mesher (Geo/planar/reparamMesherFallback.h), then the input's
-// own triangles (Geo/parametrize/reparamInputMesh.h); true if at most 1 % of the
-// elements fail Gmsh's test: the mesh is kept (logged). A mesh with edges
-// longer than twice the size (countLongEdges) is compared with MeshAdapt's.
-// A quadrangle mesh (Blossom's) is kept when at most 1 % of its elements
-// point against the input
-bool reparamKeepPlanarMesh(GFace *gf);
-
-namespace reparam {
-
 // The segments of gf's curves its triangles use fewer times than the curve
 // bounds it (once; twice for a curve on both sides, a slit, and for an
 // embedded curve)
@@ -50,12 +34,5 @@ std::size_t countUnusedCurveSegments(GFace *gf);
 std::size_t countLongEdges(GFace *gf);
 
 } // namespace reparam
-
-// For a discrete face Reparam parametrized: whether its planar mesh leaves
-// a segment of its curves unused, a hole at it (Frontal-Delaunay across a
-// slit: a curve gmsh2x_car_body's face 7 has on both sides), after the
-// other planar mesher was tried (Geo/planar/reparamMesherFallback.h); logged, and
-// Gmsh remeshes it with MeshAdapt
-bool reparamPlanarMeshLeavesHole(GFace *gf);
 
 #endif

@@ -13,6 +13,7 @@
 #include "GmshMessage.h"
 #include "MElement.h"
 #include "meshFidelity.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamOrient.h"

@@ -14,6 +14,7 @@
 #include "GmshMessage.h"
 #include "MElement.h"
 #include "OS.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"

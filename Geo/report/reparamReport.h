@@ -111,19 +111,6 @@ faceReport *findFaceReport(const GFace *gf);
 // The pending report of gf, whatever mesh it was made of (null if none)
 faceReport *findFaceReportOfFace(const GFace *gf);
 
-} // namespace reparam
-
-// Measures the new mesh of discrete face gf (hook in discreteFace::mesh,
-// patches/0001) and keeps the result for the model's report
-void reparamReportMeshedFace(GFace *gf, double seconds);
-
-// Prints the pending reports (one line per face and a total), writes them
-// to Mesh.CompoundReportFile if set, and forgets them (hook in GenerateMesh
-// after the mesh is oriented, patches/0005)
-void reparamReportMeshedModel(GModel *m);
-
-namespace reparam {
-
 // The discrete faces of m without a parametrization nor a mesh (their
 // CreateGeometry failed): holes in the mesh, named by the report
 std::vector<int> unparametrizedFaces(GModel *m);

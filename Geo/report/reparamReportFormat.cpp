@@ -37,87 +37,99 @@ namespace {
     return s;
   }
 
-  // The sums and extremes of the total line, in the same struct as a face
-  faceReport total(const std::vector<faceReport> &reports,
-                   const meshFidelity *whole)
+  void addTimes(const faceReport &r, faceReport &t)
   {
-    faceReport t;
-    double kappaSum = 0., belowSum = 0., etaSum = 0., tauLogSum = 0.,
-           meanDistanceSum = 0., absoluteHausdorff = 0.;
-    std::size_t sampled = 0;
+    const parametrizationRecord &p = r.parametrization;
+    t.parametrization.patchTime += p.patchTime;
+    t.parametrization.fillTime += p.fillTime;
+    t.parametrization.assembleTime += p.assembleTime;
+    t.parametrization.solveTime += p.solveTime;
+    t.parametrization.checkTime += p.checkTime;
+    t.parametrization.fallbackTime += p.fallbackTime;
+    t.meshTime += r.meshTime;
+  }
+
+  void addOptimization(const optimizationRecord &o, optimizationRecord &t)
+  {
+    if(!o.done) return;
+    t.kappaMinBefore =
+      t.done ? std::min(t.kappaMinBefore, o.kappaMinBefore) : o.kappaMinBefore;
+    t.done = true;
+    t.seconds += o.seconds;
+    t.inserted += o.inserted;
+    t.splits += o.splits;
+    t.collapses += o.collapses;
+    t.flips += o.flips;
+    t.moves += o.moves;
+    t.againstBefore += o.againstBefore;
+    t.againstAfter += o.againstAfter;
+  }
+
+  // The total's quality: extremes over the faces, means weighted by their
+  // elements (tau by their edges, geometrically)
+  struct qualitySums {
+    double kappa = 0., below = 0., eta = 0., tauLog = 0.;
     bool firstTriangles = true, firstQuadrangles = true;
-    for(const faceReport &r : reports) {
-      const parametrizationRecord &p = r.parametrization;
-      t.parametrization.patchTime += p.patchTime;
-      t.parametrization.fillTime += p.fillTime;
-      t.parametrization.assembleTime += p.assembleTime;
-      t.parametrization.solveTime += p.solveTime;
-      t.parametrization.checkTime += p.checkTime;
-      t.parametrization.fallbackTime += p.fallbackTime;
-      t.meshTime += r.meshTime;
-      for(int c = 0; c < numPoorTriangleCauses; c++)
-        t.poorTriangles[c] += r.poorTriangles[c];
-      const optimizationRecord &o = r.optimization;
-      if(o.done) {
-        t.optimization.kappaMinBefore = t.optimization.done ?
-          std::min(t.optimization.kappaMinBefore, o.kappaMinBefore) :
-          o.kappaMinBefore;
-        t.optimization.done = true;
-        t.optimization.seconds += o.seconds;
-        t.optimization.inserted += o.inserted;
-        t.optimization.splits += o.splits;
-        t.optimization.collapses += o.collapses;
-        t.optimization.flips += o.flips;
-        t.optimization.moves += o.moves;
-        t.optimization.againstBefore += o.againstBefore;
-        t.optimization.againstAfter += o.againstAfter;
-      }
-      const faceQuality &q = r.quality;
+
+    void add(const faceQuality &q, faceQuality &t)
+    {
       if(q.triangles) {
-        t.quality.kappaMin = firstTriangles ?
-                               q.kappaMin :
-                               std::min(t.quality.kappaMin, q.kappaMin);
+        t.kappaMin = firstTriangles ? q.kappaMin : std::min(t.kappaMin, q.kappaMin);
         firstTriangles = false;
       }
       if(q.quadrangles) {
-        t.quality.etaMin =
-          firstQuadrangles ? q.etaMin : std::min(t.quality.etaMin, q.etaMin);
+        t.etaMin = firstQuadrangles ? q.etaMin : std::min(t.etaMin, q.etaMin);
         firstQuadrangles = false;
       }
-      t.quality.triangles += q.triangles;
-      t.quality.quadrangles += q.quadrangles;
-      kappaSum += q.kappaMean * q.triangles;
-      belowSum += q.kappaShareBelow03 * q.triangles;
-      etaSum += q.etaMean * q.quadrangles;
+      t.triangles += q.triangles;
+      t.quadrangles += q.quadrangles;
+      kappa += q.kappaMean * q.triangles;
+      below += q.kappaShareBelow03 * q.triangles;
+      eta += q.etaMean * q.quadrangles;
       if(q.edges && q.tau > 0.) {
-        tauLogSum += std::log(q.tau / 100.) * q.edges;
-        t.quality.edges += q.edges;
-      }
-      if(r.hasInput) {
-        t.hasInput = true;
-        t.inputBox += r.inputBox;
-        if(r.fidelity.hausdorff >= absoluteHausdorff) {
-          absoluteHausdorff = r.fidelity.hausdorff;
-          t.fidelity.farthest = r.fidelity.farthest;
-          t.fidelity.farthestOnInput = r.fidelity.farthestOnInput;
-        }
-        meanDistanceSum += r.fidelity.meanDistance * r.fidelity.elements;
-        sampled += r.fidelity.elements;
-        t.fidelity.elements += r.fidelity.elements;
-        t.fidelity.inverted += r.fidelity.inverted;
+        tauLog += std::log(q.tau / 100.) * q.edges;
+        t.edges += q.edges;
       }
     }
-    if(t.quality.triangles) {
-      t.quality.kappaMean = kappaSum / t.quality.triangles;
-      t.quality.kappaShareBelow03 = belowSum / t.quality.triangles;
+
+    void finish(faceQuality &t) const
+    {
+      if(t.triangles) {
+        t.kappaMean = kappa / t.triangles;
+        t.kappaShareBelow03 = below / t.triangles;
+      }
+      if(t.quadrangles) t.etaMean = eta / t.quadrangles;
+      if(t.edges) t.tau = 100. * std::exp(tauLog / t.edges);
     }
-    if(t.quality.quadrangles)
-      t.quality.etaMean = etaSum / t.quality.quadrangles;
-    if(t.quality.edges)
-      t.quality.tau = 100. * std::exp(tauLogSum / t.quality.edges);
-    if(t.hasInput) {
-      t.fidelity.hausdorff = absoluteHausdorff;
-      t.fidelity.meanDistance = sampled ? meanDistanceSum / sampled : 0.;
+  };
+
+  // The total's distances: the largest of the faces', the mean weighted by
+  // their elements, or `whole`'s (the faces against their inputs together)
+  struct fidelitySums {
+    double meanDistance = 0., hausdorff = 0.;
+    std::size_t sampled = 0;
+
+    void add(const faceReport &r, faceReport &t)
+    {
+      if(!r.hasInput) return;
+      t.hasInput = true;
+      t.inputBox += r.inputBox;
+      if(r.fidelity.hausdorff >= hausdorff) {
+        hausdorff = r.fidelity.hausdorff;
+        t.fidelity.farthest = r.fidelity.farthest;
+        t.fidelity.farthestOnInput = r.fidelity.farthestOnInput;
+      }
+      meanDistance += r.fidelity.meanDistance * r.fidelity.elements;
+      sampled += r.fidelity.elements;
+      t.fidelity.elements += r.fidelity.elements;
+      t.fidelity.inverted += r.fidelity.inverted;
+    }
+
+    void finish(const meshFidelity *whole, faceReport &t) const
+    {
+      if(!t.hasInput) return;
+      t.fidelity.hausdorff = hausdorff;
+      t.fidelity.meanDistance = sampled ? meanDistance / sampled : 0.;
       t.fidelity.diagonal = t.inputBox.empty() ? 0. : t.inputBox.diag();
       if(whole) {
         t.fidelity.hausdorff = whole->hausdorff;
@@ -126,6 +138,25 @@ namespace {
         t.fidelity.farthestOnInput = whole->farthestOnInput;
       }
     }
+  };
+
+  // The sums and extremes of the total line, in the same struct as a face
+  faceReport total(const std::vector<faceReport> &reports,
+                   const meshFidelity *whole)
+  {
+    faceReport t;
+    qualitySums quality;
+    fidelitySums fidelity;
+    for(const faceReport &r : reports) {
+      addTimes(r, t);
+      for(int c = 0; c < numPoorTriangleCauses; c++)
+        t.poorTriangles[c] += r.poorTriangles[c];
+      addOptimization(r.optimization, t.optimization);
+      quality.add(r.quality, t.quality);
+      fidelity.add(r, t);
+    }
+    quality.finish(t.quality);
+    fidelity.finish(whole, t);
     return t;
   }
 

@@ -13,6 +13,7 @@
 #include "curvatureMetric.h"
 #include "meshFidelity.h"
 #include "reparamCurvatureMetric.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 

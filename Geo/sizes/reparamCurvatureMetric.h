@@ -18,12 +18,6 @@ class GEntity;
 class GFace;
 class SMetric3;
 
-// The smallest size from the curvature at (x, y, z) on ge, a discrete face
-// Reparam parametrized or one of its curves (u: the curve's parameter,
-// unused); 1e22 elsewhere or with the option off
-double reparamCurvatureMeshSize(GEntity *ge, double u, double x, double y,
-                                double z);
-
 namespace reparam {
 
 // The metric at (x, y, z) on ge, a discrete face Reparam parametrized;

@@ -24,6 +24,7 @@
 #include "narrowStrips.h"
 #include "reparamCreaseCurves.h"
 #include "reparamCurveMesh.h"
+#include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
