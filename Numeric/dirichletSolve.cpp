@@ -81,10 +81,8 @@ namespace {
     else if constexpr(std::is_same<Scalar, double>::value) {
       // KLU (SuiteSparse): AMD ordering, left-looking LU. Measured fastest of
       // the sparse LUs on these matrices (symmetric pattern, diagonally
-      // dominant rows) up to about 10k unknowns: 1.6 ms for 1.7k and 7 ms
-      // for 5.6k, against 2.3 / 8 ms for UMFPACK and 7 / 30 ms for Eigen's
-      // SparseLU. Above, UMFPACK's multifrontal BLAS kernels win: 0.22 s
-      // against 0.27 s at 25k, 0.38 s against 0.58 s at 50k (OpenBLAS).
+      // dominant rows) up to about 10k unknowns; above, UMFPACK's
+      // multifrontal BLAS kernels win (bench/README.md#maps-and-solvers).
       if(nFree <= 10000) {
         Eigen::KLU<Eigen::SparseMatrix<double> > solver;
         err = factorAndSolve(solver, Lff, rhs, xFree);

@@ -20,7 +20,7 @@ packages=(build-essential cmake ccache pkg-config dpkg-dev
   # LU of the mean-value map is 1.5x faster with it on 50k unknowns
   libopenblas0-serial
   # the gmsh executable's allocator: Gmsh's stages on large inputs spent a
-  # fifth of their time in glibc's malloc (README *Scale*)
+  # fifth of their time in glibc's malloc (bench/README.md#the-allocator)
   libjemalloc-dev
   zlib1g-dev libpng-dev libjpeg-dev python3
   # Debian's gmsh source links these even without the GUI (its patch

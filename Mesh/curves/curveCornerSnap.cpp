@@ -63,9 +63,9 @@ namespace {
                      std::vector<std::pair<double, int> > &corners)
   {
     // Below this a turn is the polyline following a smooth curve: moving
-    // nodes onto it would only make the segments uneven (the dome's holes,
-    // polygons of 12 sides, turn by 30 degrees per node: kappa min 0.68 ->
-    // 0.55 when snapped). 40 degrees: the feature angle of the STL recipe.
+    // nodes onto it would only make the segments uneven (a hole's polygon
+    // of 12 sides turns by 30 degrees per node: bench/README.md#curve-corners).
+    // 40 degrees: the feature angle of the STL recipe.
     const double cornerAngle = 40. * M_PI / 180.;
     const double w = 0.5 * (arc.of(t1) - arc.of(t0));
     for(int i = std::max(1, (int)std::floor(t0) + 1);

@@ -4,8 +4,7 @@
 // polyline it follows. Gmsh places a discrete curve's nodes at even arc
 // lengths, so a segment cuts across a corner of the input (a crease turning,
 // a tip) and the surface meshes on both sides cut it too: the largest
-// distance to the input on CAD parts (gmsh2x_car_body: a 45 degree turn of a
-// crease, half a segment from the nearest node).
+// distance to the input on CAD parts (bench/README.md#curve-corners).
 
 #ifndef CURVE_CORNER_SNAP_H
 #define CURVE_CORNER_SNAP_H
@@ -27,19 +26,18 @@ namespace reparam {
 // apportioned so that the curve keeps its count of segments (or at least
 // its parity: Gmsh gives each curve of a face Blossom recombines an even
 // count, and an odd one leaves the face an odd number of triangles, which
-// Blossom cannot pair; camelhead's border curves). Rounding each piece
-// instead places the nodes better for triangles (keeping the count:
-// adis16480's kappa min 0.041 -> 0.010, gmsh2x_squirrel's Hausdorff
-// distance 0.27 -> 0.46 %). Without a corner, params
+// Blossom cannot pair). Rounding each piece instead places the nodes better
+// for triangles (keeping the count cost kappa min and Hausdorff distance:
+// bench/README.md#curve-corners). Without a corner, params
 // as they are. `allowed`, when given, says which input nodes may be taken
 // (not one another curve took: two nodes there would make a degenerate
 // triangle); `corners` gets the ones taken. everyCorner: not only the
 // sharpest of each segment, for a curve along a strip narrower than the
 // size, whose sharp turns are the strip's (the two corners of a slot's end
-// 0.8 segments apart: adis16480's segment across the end cut one off, and
-// the slot wall's triangle there turned over); elsewhere the sharpest
-// only (a scan's noisy classification curves: armadillo's kappa min 0.52
-// -> 0.38 with every corner)
+// closer than a segment: the segment across the end cut one off, and the
+// slot wall's triangle there turned over); elsewhere the sharpest only (a
+// scan's noisy classification curves lose kappa min with every corner:
+// bench/README.md#curve-corners)
 std::vector<double>
 snapCurveNodesToCorners(const std::vector<SPoint3> &polyline,
                         const std::vector<double> &params,

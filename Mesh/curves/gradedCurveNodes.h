@@ -4,8 +4,8 @@
 // varies: Gmsh's 1D mesher integrates 1 / size along the curve to a relative
 // precision of 1e-9 (Mesh.LcIntegrationPrecision), which a size made of
 // cones (Mesh/sizes/gradedBoundarySize.h) turns into hundreds of thousands of
-// evaluations (gmsh2x_car_body's curves: 0.01 -> 1.8 s); here 1 / size is
-// summed over pieces of a quarter of the size.
+// evaluations (seconds of 1D meshing: bench/README.md#sizes-from-the-curves);
+// here 1 / size is summed over pieces of a quarter of the size.
 
 #ifndef GRADED_CURVE_NODES_H
 #define GRADED_CURVE_NODES_H

@@ -3,7 +3,7 @@
 // The tips of a triangulation: interior nodes where the surface comes to a
 // point (a cone apex: a wing tip, a spike of bone). A planar mesher with a
 // uniform size puts no node there unless told to, and cuts the tip off
-// (gmsh2x_falcon1: its tip 6.9 % of the diagonal from the mesh).
+// (bench/README.md#tips-and-creases).
 
 #ifndef CONE_POINTS_H
 #define CONE_POINTS_H

@@ -80,7 +80,8 @@ creaseCorners(const std::vector<SPoint3> &points,
               const std::vector<std::array<int, 3> > &triangles,
               const std::function<bool(int, int)> &isCrease)
 {
-  // (not where two turn: a scan's creases zig-zag, armadillo got hundreds)
+  // (not where two turn: a scan's creases zig-zag;
+  // bench/README.md#tips-and-creases)
   std::vector<int> corners;
   for(const auto &n : creaseEdges(triangles, isCrease))
     if(n.second.size() >= 3 && n.first < (int)points.size())

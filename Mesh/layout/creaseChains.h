@@ -3,8 +3,7 @@
 // The sharp creases left inside a patch (a crease that ends inside its face
 // bounds no patch; one the noise merge took in) as chains of input nodes,
 // for the mesh to follow them as embedded curves instead of cutting across
-// (gmsh2x_car_body: a 45 degree crease along the sill, 1.6 % of the
-// diagonal from the mesh).
+// (bench/README.md#tips-and-creases).
 
 #ifndef CREASE_CHAINS_H
 #define CREASE_CHAINS_H
@@ -41,13 +40,11 @@ creaseChains(const std::vector<SPoint3> &points,
 // segments) and either bent (its ends closer than 0.8 of its length) or
 // with an end within half a size of one of `others` (the face's other
 // curves, none ending there). Three segments cannot follow a bent crease,
-// and its ends are corners inside the face (armadillo: a crease doubling
-// back on itself, 1.7 sizes long, gave a triangle of kappa 0.14 between two
-// of its segments); between an end and a curve passing closer than half a
-// size the mesh must put a triangle narrower than that (two creases ending
-// 0.3 sizes apart: 0.24). A straight short crease away from others is
-// meshed along as well as a long one (fertility's kappa min 0.615, 0.551
-// when every crease shorter than three sizes is left out)
+// and its ends are corners inside the face (a crease doubling back on
+// itself leaves a sliver between two of its segments); between an end and a
+// curve passing closer than half a size the mesh must put a triangle
+// narrower than that. A straight short crease away from others is meshed
+// along as well as a long one (bench/README.md#tips-and-creases)
 bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
                            const std::vector<std::vector<SPoint3> > &others,
                            double size);

@@ -2,10 +2,10 @@
 //
 // Nodes pinched between two elements: a node m of exactly two elements,
 // each of which has both of m's edges, (a, m) and (m, b). Gmsh's
-// recombination leaves one now and then (aneurysm: a triangle of three
-// nodes in a row on a cut, folded onto the quadrangle across the cut;
-// gmsh2x_skull: two triangles around an inner node, the one lying on the
-// other, their edge (a, b) used four times). Without m the surface keeps
+// recombination leaves one now and then (a triangle of three nodes in a
+// row on a cut, folded onto the quadrangle across it; or two triangles
+// around an inner node, the one lying on the other, their edge (a, b) used
+// four times: bench/README.md#pinched-nodes). Without m the surface keeps
 // its shape: each of the two elements loses its corner m, a quadrangle
 // becoming a triangle and a triangle a segment, which goes.
 

@@ -3,9 +3,10 @@
 // The ways to split a small polygon into triangles and quadrangles along
 // its diagonals. Two elements of a quadrangle mesh sharing an edge make a
 // polygon of four to six corners; where one of them points against the
-// input (it lies across a fold thinner than the mesh size, camelhead's
-// lips), another split of the same polygon, with the same corners and
-// sides, may follow the input on both sides of the fold.
+// input (it lies across a fold thinner than the mesh size), another split
+// of the same polygon, with the same corners and sides, may follow the
+// input on both sides of the fold
+// (bench/README.md#elements-against-the-input-split-again).
 
 #ifndef POLYGON_SPLITS_H
 #define POLYGON_SPLITS_H

@@ -279,8 +279,8 @@ namespace {
     // at a node of the first or a neighbour of the merged node) make the
     // mesh more regular: both kept, or the first undone. Most irregular
     // nodes left after the sweeps are a node of valence 3 next to one of
-    // 5, which no single collapse nor rotation removes (aorta_gmsh: 231 of
-    // its 556 neutral collapses let another gain)
+    // 5, which no single collapse nor rotation removes (how many gain:
+    // bench/README.md#quadrangles-collapsed-along-a-diagonal)
     std::size_t lookAhead()
     {
       std::size_t collapses = 0;

@@ -4,8 +4,8 @@
 // rotations (Mesh/quad/quadEdgeRotation.h) move an irregular node but keep how
 // many there are; most of those Frontal-Delaunay for quads and Blossom
 // leave come as a node of valence 3 next to two of valence 5 across a
-// quadrangle (aorta_gmsh: 160 of its 209 quadrangles whose collapse makes
-// the mesh more regular have corners of valence 3, 4, 5, 5 in turn).
+// quadrangle, corners of valence 3, 4, 5, 5 in turn
+// (bench/README.md#quadrangles-collapsed-along-a-diagonal).
 // Collapsing such a quadrangle along the diagonal of its other two corners
 // merges them into one node (valence the sum less 2) and takes one
 // quadrangle from each of the two corners left: 3 + 4 - 2 = 5 and 5 - 1 =
@@ -34,10 +34,10 @@ struct quadCollapseOptions {
   int maxPasses = 4;
   // with an input: both nodes' old places within nodeTolerance times the
   // quadrangle's mean side from the new quadrangles (a node on a tip or a
-  // crease stays: with no such test fertility's Hausdorff distance rose
-  // 0.71 -> 0.91 % of the diagonal), and the new quadrangles' centres no
-  // farther from the input than the old ones' by more than tolerance times
-  // it
+  // crease stays: without this test the Hausdorff distance rose on the
+  // scans, bench/README.md#quadrangles-collapsed-along-a-diagonal), and the
+  // new quadrangles' centres no farther from the input than the old ones'
+  // by more than tolerance times it
   double nodeTolerance = 0.1, tolerance = 0.05;
   // the size asked at a point (empty: none): a quadrangle whose mean side
   // is over `largest` times the size at its centre does not collapse (its

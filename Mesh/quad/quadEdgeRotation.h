@@ -3,10 +3,9 @@
 // Edge rotations that make a mesh of quadrangles more regular. Node moves
 // (Mesh/quad/quadNodeSmoothing.h) cannot change how many quadrangles meet at a
 // node, and a quadrangle at an inner node of valence 3 or 5 has a corner of
-// 120 or 72 degrees at best (eta 0.67 or 0.8): a fifth of aorta_gmsh's
-// inner nodes are irregular after Frontal-Delaunay for quads and Blossom,
-// and the quadrangles touching one average eta 0.73 against 0.92 for the
-// others. Two quadrangles sharing an edge make a hexagon; rotating the edge
+// 120 or 72 degrees at best (eta 0.67 or 0.8), and Frontal-Delaunay for
+// quads and Blossom leave many such nodes (bench/README.md#irregular-nodes).
+// Two quadrangles sharing an edge make a hexagon; rotating the edge
 // to one of the hexagon's two other diagonals takes a quadrangle from each
 // end of the old edge and gives one to each end of the new, so an edge
 // between two nodes of valence 5 can move to two nodes of valence 3, and an

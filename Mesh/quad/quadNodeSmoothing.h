@@ -6,13 +6,13 @@
 // keeps the nodes of the face's curves where the 1D mesh put them: on the
 // cut curves of a patch layout, which follow the input's edges, a node
 // where the cut zig-zags gives the quadrangles on either side corners of
-// 150-170 degrees (eta 0.1-0.3; every quadrangle below 0.3 of aorta_gmsh,
-// tooth, aneurysm and gmsh2x_bifurcation has three nodes on a curve). Here
-// the nodes of the cuts move like the inner ones, across the cut, staying
-// on the input surface (aorta_gmsh: eta min 0.13 -> 0.50, mean 0.82 ->
-// 0.84). Each node tries places around it in a compass search, worst ring
-// first, and keeps one where no quadrangle around falls below the worst
-// one there (nor a triangle Blossom left below the worst triangle) and:
+// 150-170 degrees (eta 0.1-0.3: most of the worst quadrangles of the smooth
+// scans have three nodes on a curve). Here the nodes of the cuts move like
+// the inner ones, across the cut, staying on the input surface
+// (bench/README.md#squared-up-on-the-input-across-the-cuts). Each node
+// tries places around it in a compass search, worst ring first, and keeps
+// one where no quadrangle around falls below the worst one there (nor a
+// triangle Blossom left below the worst triangle) and:
 // in the first half of the sweeps, the corners' squared deviation from the
 // right angle summed over the ring falls (a smooth measure, which
 // straightens a zig-zag row of nodes; raising eta summed, which only sees
@@ -49,13 +49,10 @@ struct quadSmoothingOptions {
   // per point, the length its edges should have (empty: none): in the
   // first half of the sweeps each edge of the ring adds lengthWeight times
   // its squared log-ratio to the mean of its ends' lengths to the corners'
-  // deviation. The angles alone let the edges spread (aneurysm: 0.5 to 1.6
-  // of the size), which tau measures: with their mean at each node before
-  // the moves (meanQuadEdgeAtPoints) and 0.25, tau +0.4 to 0.7 points on
-  // the smooth shared meshes (aneurysm 87.2 -> 87.9 %, tooth 89.9 ->
-  // 90.6 %), eta mean within 0.001; with 0.5, tau +0.3 more but a
-  // sphere's quadrangles (the test) eta min 0.535 -> 0.500, mean 0.881 ->
-  // 0.877; with 2, eta mean 0.005 lower on the shared meshes
+  // deviation. The angles alone let the edges spread, which tau measures;
+  // their mean at each node before the moves (meanQuadEdgeAtPoints) with a
+  // weight of 0.25 raised tau and left eta mean as it was (the weights
+  // tried: bench/README.md#edges-kept-even)
   std::vector<double> size;
   double lengthWeight = 0.25;
 };

@@ -139,9 +139,8 @@ namespace {
     // under the ring (or no farther from those than the old ones), and
     // follow the input as closely as the old ones. The input nodes are
     // checked as the short-edge collapses check them (checking the removed
-    // point alone, a collapse cut across a coarse input); on the shared
-    // scans they refuse some splits (armadillo: 40 splits, 87 without) and
-    // change no Hausdorff distance
+    // point alone, a collapse cut across a coarse input; measured in
+    // bench/README.md#nodes-split)
     bool followsInput(const std::vector<quad> &before,
                       const std::vector<quad> &after, int v, const SPoint3 &p1,
                       const SPoint3 &p2, double side)

@@ -1,14 +1,12 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
 // Node splits that make a mesh of quadrangles more regular: the inverse of
-// the diagonal collapses (Mesh/quad/quadDiagonalCollapse.h). A node of valence 5
-// whose ring holds two nodes of valence 3 two sides apart is split in two
-// along them, with a new quadrangle between the halves: the halves get
-// valences 3 and 4, each of the two nodes one more (3 + 1 = 4), three
+// the diagonal collapses (Mesh/quad/quadDiagonalCollapse.h). A node of
+// valence 5 whose ring holds two nodes of valence 3 two sides apart is split
+// in two along them, with a new quadrangle between the halves: the halves
+// get valences 3 and 4, each of the two nodes one more (3 + 1 = 4), three
 // irregular nodes become one. Frontal-Delaunay for quads and Blossom leave
-// such nodes where the collapses cannot reach (aneurysm: 100 of its 715
-// nodes of valence 5 after the collapses have a split that gains, 61 of
-// them by two irregular nodes).
+// such nodes where the collapses cannot reach (bench/README.md#nodes-split).
 
 #ifndef QUAD_NODE_SPLIT_H
 #define QUAD_NODE_SPLIT_H

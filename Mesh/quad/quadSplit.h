@@ -3,10 +3,11 @@
 // Quadrangles split into two triangles. After the recombination, the edge
 // rotations, the diagonal collapses and the node moves, the worst
 // quadrangles left are those with three corners along a curve that bends
-// by 10-20 degrees there (tooth: a corner of 169 degrees, eta 0.127): no
-// node move squares them up, the curve's nodes stay on it. Split along the
-// diagonal from that corner, they make two fair triangles (kappa 0.85
-// there), the inverse of Mesh/quad/triangleMerge.h's pairs.
+// by 10-20 degrees there (a corner of 160-170 degrees): no node move
+// squares them up, the curve's nodes stay on it. Split along the diagonal
+// from that corner, they make two fair triangles, the inverse of
+// Mesh/quad/triangleMerge.h's pairs
+// (bench/README.md#quadrangles-with-a-flat-corner-split).
 
 #ifndef QUAD_SPLIT_H
 #define QUAD_SPLIT_H

@@ -2,10 +2,9 @@
 //
 // Pairs of triangles merged into quadrangles. Blossom's recombination leaves
 // the triangles it could not pair well in the parametric plane; after the
-// quadrangles are squared up on the input (Mesh/quad/quadNodeSmoothing.h) some of
-// those neighbours make a fair quadrangle in 3D (gmsh2x_skull: 12 of the 31
-// pairs of its 54 triangles left reach eta 0.3), and every pair merged is
-// two triangles fewer.
+// quadrangles are squared up on the input (Mesh/quad/quadNodeSmoothing.h)
+// some of those neighbours make a fair quadrangle in 3D, and every pair
+// merged is two triangles fewer (bench/README.md#triangles-left-merged).
 
 #ifndef TRIANGLE_MERGE_H
 #define TRIANGLE_MERGE_H

@@ -5,9 +5,9 @@
 // shortest segment and interpolates these linearly over the triangulation
 // of the boundary nodes the meshers start from; on a discrete face that
 // first triangulation has triangles across the whole face, so one short
-// segment shrinks the mesh far away from it (tau 77.8 % and 42 338 triangles
-// on armadillo where the size asks for 28 468). Here a node's size only
-// reaches as far as the gradient lets it.
+// segment shrinks the mesh far away from it
+// (bench/README.md#sizes-from-the-curves). Here a node's size only reaches
+// as far as the gradient lets it.
 
 #ifndef GRADED_BOUNDARY_SIZE_H
 #define GRADED_BOUNDARY_SIZE_H

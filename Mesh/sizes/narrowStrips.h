@@ -4,9 +4,8 @@
 // a strip measured from its boundary straight across it. A strip narrower
 // than the size gets triangles across it whatever the mesher does; with the
 // size along its curves, one triangle spans it with a base of the size and
-// a height of its width (t13_data: a planar rim of width 0.33 h, 54
-// triangles of kappa mean 0.45). Sizes of about its width along its curves
-// give near-equilateral triangles instead.
+// a height of its width (bench/README.md#narrow-strips). Sizes of about its
+// width along its curves give near-equilateral triangles instead.
 
 #ifndef NARROW_STRIPS_H
 #define NARROW_STRIPS_H
