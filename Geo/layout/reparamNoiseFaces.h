@@ -6,8 +6,8 @@
 // known and takes the input's own edge for it: on a scan remeshed coarser
 // than its input, a patch a few input triangles wide between sharp edges
 // stays a face of its own, and its curves' nodes leave it slivers no
-// optimizer may change (armadillo: a face of 4 input triangles meshed as
-// one triangle of kappa 0.03). Once the faces are meshed the size h is
+// optimizer may change (bench/README.md, Faces that are noise at the mesh
+// scale). Once the faces are meshed the size h is
 // known. A strip of width w crossed by triangles of edge h along it has
 // kappa at best 2 sqrt(3) w h / (1.5 h^2 + 2 w^2): below 0.5 for w < h / 4
 // (0.53 at h / 4, 0.28 at h / 8). The curves of a face narrower than that

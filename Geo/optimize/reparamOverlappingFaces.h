@@ -6,11 +6,11 @@
 // mm) has its curves' nodes on both sides and none inside: both faces are
 // meshed with the same triangles, the part collapses into a double sheet
 // whose edges four triangles share, and nothing told the user
-// (adis16480: 160 such edges; a noisy segmentation: 3). One of the two
-// faces is then meshed with its input triangles stitched to its curves
-// (Geo/parametrize/reparamInputMesh.h, with its warning), which reopens the part as
-// the input has it, unless that input has slivers (adis16480's pins: fans
-// of triangles of kappa 2e-5); the pairs left are named in one warning.
+// (bench/README.md, Bad input). One of the two faces is then meshed with
+// its input triangles stitched to its curves
+// (Geo/parametrize/reparamInputMesh.h, with its warning), which reopens the
+// part as the input has it, unless that input has slivers (fans of
+// triangles of kappa near 0); the pairs left are named in one warning.
 
 #ifndef REPARAM_OVERLAPPING_FACES_H
 #define REPARAM_OVERLAPPING_FACES_H

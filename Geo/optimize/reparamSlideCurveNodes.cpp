@@ -40,11 +40,9 @@ namespace {
   // than this share of their length (the optimization inserts the input
   // nodes a face's mesh passes a quarter of its edges from), if the worst
   // triangle around stays at or above the lower of its worst and
-  // fidelityFloor (the optimization's target: with 0.5 gmsh2x_linkrod2's
-  // kappa min fell 0.606 -> 0.526), and no triangle turns by more than
-  // fidelityTurn (radians): onto a tip they turn with the input (with 0.5,
-  // gmsh2x_skull's farthest input node, the tip of a spike a curve runs
-  // over, stayed 0.28 sizes off the mesh)
+  // fidelityFloor (the optimization's target), and no triangle turns by
+  // more than fidelityTurn (radians): onto a tip they turn with the input
+  // (bench/README.md, Curve nodes slid along their curves)
   const double cutOff = 0.25, fidelityFloor = 0.6, fidelityTurn = 1.;
 
   struct triangleAround {

@@ -286,9 +286,8 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
      stitched.turnedTriangles || stitched.triangles.empty())
     return false;
   // no more triangles against the input than the planar mesh kept (where
-  // the input itself folds, the test finds its own triangles against it:
-  // pelvis_tlem2 has one such; the planar mesh would go to MeshAdapt,
-  // which left two)
+  // the input itself folds, the test finds its own triangles against it;
+  // the planar mesh would go to MeshAdapt, which leaves more)
   surfaceMesh candidate;
   candidate.points = input.points;
   for(MVertex *v : boundary) candidate.points.push_back(v->point());

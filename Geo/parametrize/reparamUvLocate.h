@@ -7,7 +7,7 @@
 // points, normals and derivatives just outside the parametrized triangles.
 // Gmsh's discreteFace answered "not found" (with an arbitrary normal), which
 // made Frontal-Delaunay's mesh invalid and Gmsh throw it away for MeshAdapt
-// (camelhead: 35 s, 27 elements against the input). The hook
+// (bench/README.md, Points just outside the (u, v) triangles). The hook
 // (patches/0007) takes such points on the closest triangle instead.
 //
 // The points inside are located by a tree of the (u, v) triangles' boxes

@@ -2,8 +2,8 @@
 //
 // Repair of the few triangles of a face's new mesh that point against the
 // input under them: on scans they lie across folds thinner than the mesh
-// size (the lips of camelhead, the ridges of pelvis_tlem2), their corners on
-// both sides of the fold. Each of their inner edges is tried split at its
+// size (lips, ridges), their corners on both sides of the fold
+// (bench/README.md, Elements against the input). Each of their inner edges is tried split at its
 // midpoint in (u, v), whose image lies on the surface, on the fold (the
 // four triangles stay valid in (u, v): the midpoint of an edge of two valid
 // triangles always gives four), and flipped (if both new triangles keep

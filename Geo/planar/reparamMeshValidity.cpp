@@ -65,9 +65,9 @@ namespace {
     const bool reversed = 2 * against > gf->triangles.size();
     // bounded: each pass searches the input under every triangle three
     // times, and on a CAD input with huge triangles among tiny ones a search
-    // is slow (a mean value face of gmsh2x_king_ascii with 53 triangles
-    // against it: minutes); past the budget none counts as against, which
-    // ends the repair (the optimization after it counts again)
+    // is slow (minutes on a wound CAD face, bench/README.md, Elements against
+    // the input); past the budget none counts as against, which ends the
+    // repair (the optimization after it counts again)
     const std::size_t budget = 20 * gf->triangles.size() + 1000;
     std::size_t used = 0;
     invertedRepair repair = splitInvertedTriangles(gf, [&](MTriangle *t) {
@@ -117,10 +117,10 @@ namespace {
   // A face whose mesh has edges longer than twice the size, none against
   // the input: the planar mesher did not fill it (a hole's wall of needle
   // triangles as tall as four sizes, whose (u, v) image squeezes its height:
-  // Frontal-Delaunay found no point to insert, and left 16 triangles across
-  // the wall, kappa min 0.17). MeshAdapt, which refines by edge splits
-  // instead of points placed in (u, v), kept if it does better (logged);
-  // Delaunay tried first filled none of featuretype's 8 walls
+  // Frontal-Delaunay finds no point to insert). MeshAdapt, which refines by
+  // edge splits instead of points placed in (u, v), kept if it does better
+  // (logged); Delaunay filled no such wall (bench/README.md, Faces left
+  // nearly empty)
   void fillWithAnotherMesher(GFace *gf)
   {
     meshDefects defects;
@@ -156,13 +156,10 @@ namespace {
   // them (the report's test): Gmsh's test, which takes the normals at the
   // nodes, fails a recombined mesh across a fold thinner than the mesh size
   // as it fails a triangle mesh, and MeshAdapt, remeshing the whole face,
-  // crosses the same folds, slower and worse (camelhead's largest face: 8
-  // elements against it after 25 s, eta mean 0.78; Frontal-Delaunay for
-  // quads kept: 0.1 s). Above 1 %, compared with the other meshers' for
-  // that face (Gmsh took MeshAdapt's blindly: gmsh2x_skull's face 18, 2 of
-  // Frontal-Delaunay for quads' elements against the input, 7 of
-  // MeshAdapt's, 1 of Delaunay's). The triangle repairs above do not apply
-  // to quadrangles
+  // crosses the same folds, slower and worse. Above 1 %, compared with the
+  // other meshers' for that face instead of taking MeshAdapt's blindly
+  // (bench/README.md, MeshAdapt for a whole face). The triangle repairs
+  // above do not apply to quadrangles
   bool keepQuadMesh(GFace *gf)
   {
     // a mesh tried in place of another: compared there
@@ -203,8 +200,8 @@ bool reparamKeepPlanarMesh(GFace *gf)
   // None against the input under it (the report's test, which samples the
   // input at the centroid and halfway to the corners) or none against the
   // normals at the nodes (Gmsh's test): kept. MeshAdapt would only cross
-  // the same thin folds, slower (a 33-element face of gmsh2x_skull: 1
-  // element failed Gmsh's test, none the report's; MeshAdapt left 1)
+  // the same thin folds, slower (bench/README.md, Elements against the
+  // input).
   // Mesh.CompoundOptimize turns back the triangles against the input with
   // the others it optimizes (Geo/optimize/reparamOptimizeFace.cpp): when none is
   // left, the mesh is kept without a second search of the input under
@@ -308,9 +305,10 @@ std::size_t countUnusedCurveSegments(GFace *gf)
 bool reparamPlanarMeshLeavesHole(GFace *gf)
 {
   // quadrangle meshes too: Blossom's pairing, and Gmsh's smoothing of the
-  // quadrangles in (u, v), left a quadrangle of gmsh2x_car_body's face 7
-  // with two nodes of its curve as a diagonal, the segment between them
-  // used by the face on its other side only (a boundary loop more)
+  // quadrangles in (u, v), can leave a quadrangle with two nodes of its
+  // curve as a diagonal, the segment between them used by the face on its
+  // other side only (a boundary loop more; bench/README.md, Curve segments
+  // left unused)
   if(reparamTryingOtherMesher()) return false;
   // taken whatever the mesh: no face is left in the list for another model
   const bool bamgFailed = takeBamgFailure(gf);

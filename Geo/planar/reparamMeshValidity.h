@@ -4,9 +4,8 @@
 // Reparam parametrized (hook in meshGFace, patches/0008). Gmsh remeshes a
 // non-planar face with MeshAdapt as soon as one element disagrees with the
 // normals of the input under its nodes; on scans those few elements cross
-// folds thinner than the mesh size, which MeshAdapt crosses too (camelhead:
-// 9 of 16999 elements with Frontal-Delaunay in 0.4 s; 27 with MeshAdapt in
-// 35 s, Hausdorff distance 0.45 % -> 1.8 %).
+// folds thinner than the mesh size, which MeshAdapt crosses too, far slower
+// and farther from the input (bench/README.md, Elements against the input).
 
 #ifndef REPARAM_MESH_VALIDITY_H
 #define REPARAM_MESH_VALIDITY_H

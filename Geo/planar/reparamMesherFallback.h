@@ -3,12 +3,9 @@
 // A face whose Delaunay or Frontal-Delaunay mesh leaves a hole, or keeps
 // triangles against the input after the local repairs, gets a mesh from the
 // other of the two, kept when it has fewer defects. Gmsh remeshes every
-// such face with MeshAdapt, some 10 times slower (35 s on a 17 000-triangle
-// face of camelhead, 26 s on a 3 000-triangle face of adis16480) and no
-// better there: adis16480's face 2 kept 1 triangle against the input with
-// Frontal-Delaunay, 2 with MeshAdapt, 0 with Delaunay. Where Gmsh would
-// still remesh with MeshAdapt, its mesh is compared too, not taken blindly
-// (a face of a noisy camelhead: 2 against the input, 8 with MeshAdapt).
+// such face with MeshAdapt, some 10 times slower and no better there; where
+// Gmsh would still remesh with MeshAdapt, its mesh is compared too, not
+// taken blindly (bench/README.md, Elements against the input).
 // A face the planar mesher left nearly empty (edges longer than twice the
 // size) is compared with MeshAdapt's mesh (Geo/planar/reparamMeshValidity.h).
 // Quadrangle meshes too: the other mesher's is recombined the same way.

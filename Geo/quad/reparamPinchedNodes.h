@@ -2,9 +2,9 @@
 //
 // The pinched nodes (Mesh/quad/pinchedNodes.h) Gmsh's recombination leaves in
 // the quadrangle meshes of Reparam's faces, removed: an element folded
-// onto its neighbour there points against the input (aneurysm: a triangle
-// of three nodes of a cut), or two triangles lie on each other (an edge
-// of four triangles).
+// onto its neighbour there points against the input (a triangle of three
+// nodes of a cut), or two triangles lie on each other (an edge of four
+// triangles; bench/README.md, Pinched nodes).
 
 #ifndef REPARAM_PINCHED_NODES_H
 #define REPARAM_PINCHED_NODES_H

@@ -4,9 +4,9 @@
 // split again with a neighbour (Mesh/quad/polygonSplits.h). The triangle
 // meshes have their own repair of such triangles before their
 // optimization (edge splits and flips, Geo/planar/invertedElementRepair.h), the
-// quadrangle meshes had none: camelhead's lips, a fold thinner than the
-// mesh size, kept one to four elements against the input from one run to
-// the next.
+// quadrangle meshes had none: a fold thinner than the mesh size kept a few
+// elements against the input (bench/README.md, Elements against the input
+// split again).
 
 #ifndef REPARAM_RESPLIT_AGAINST_H
 #define REPARAM_RESPLIT_AGAINST_H
