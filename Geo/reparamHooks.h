@@ -19,6 +19,7 @@
 #include <functional>
 #include <string>
 #include <vector>
+#include "SBoundingBox3d.h"
 #include "SPoint2.h"
 #include "SPoint3.h"
 
@@ -32,7 +33,6 @@ class MElementOctree;
 class MLine;
 class MTriangle;
 class MVertex;
-class SBoundingBox3d;
 class SMetric3;
 class optionWindow;
 class reparamUvLocator;

@@ -1,14 +1,24 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The facets of an STL file as Gmsh reads them (hook in GModel::readSTL,
+// patches/0009): a facet with a NaN or infinite coordinate made Gmsh's
+// reader crash (its node search box became NaN), and a file cut short was
+// refused whole. Such facets are dropped, with one warning; the others are
+// read.
+//
+// reparamDropInvalidStlFacets takes per solid 3 corners per facet: an
+// incomplete last facet (a file cut short) is dropped too, with a warning;
+// a file left without any facet, or with zero-area ones only, is an error.
 
 #include <array>
 #include <cmath>
 #include <map>
 #include "GmshMessage.h"
+#include "SBoundingBox3d.h"
 #include "SVector3.h"
 #include "facetOrientation.h"
 #include "reparamHooks.h"
 #include "reparamOptions.h"
-#include "reparamStlInput.h"
 
 namespace reparam {
 

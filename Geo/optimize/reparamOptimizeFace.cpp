@@ -1,4 +1,12 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// The new mesh of a discrete face optimized on its input triangulation
+// (Mesh.CompoundOptimize; hook in discreteFace::mesh, patches/0001, after
+// the planar mesher and before the face's report): Mesh/optimize/surfaceMeshOptimizer
+// on the face's triangles, its curves' nodes and edges (boundary and
+// embedded) kept, and each moved or new node given the (u, v) the face's
+// parametric interface has for the input point it lies on, so that it still
+// maps it there.
 
 #include <algorithm>
 #include <set>
@@ -15,7 +23,6 @@
 #include "reparamInputMesh.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamCurvatureMetric.h"
-#include "reparamOptimizeFace.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "surfaceMeshOptimizer.h"

@@ -12,6 +12,7 @@
 #include "MVertex.h"
 #include "SVector3.h"
 #include "edgeByCoordinates.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOverlappingFaces.h"
 #include "reparamReport.h"

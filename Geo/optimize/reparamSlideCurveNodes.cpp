@@ -16,6 +16,7 @@
 #include "curveNodeSlide.h"
 #include "meshFidelity.h"
 #include "reparamCurveMesh.h"
+#include "reparamHooks.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamReport.h"
 #include "reparamSlideCurveNodes.h"

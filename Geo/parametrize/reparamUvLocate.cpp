@@ -1,4 +1,19 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// Where a point of the (u, v) plane lies on a discrete face whose (u, v)
+// image is not convex. Gmsh's planar meshers mesh the polygon of the face's
+// boundary nodes; on the free boundary of a conformal map that polygon's
+// chords cut across concave stretches of the image, so the mesher asks for
+// points, normals and derivatives just outside the parametrized triangles.
+// Gmsh's discreteFace answered "not found" (with an arbitrary normal), which
+// made Frontal-Delaunay's mesh invalid and Gmsh throw it away for MeshAdapt
+// (bench/README.md, Points just outside the (u, v) triangles). The hook
+// (patches/0007) takes such points on the closest triangle instead.
+//
+// The points inside are located by a tree of the (u, v) triangles' boxes
+// (Mesh/core/uvTriangleTree.h) in place of Gmsh's octree (patches/0021), built
+// with the face's parametrization when Reparam's maps are on; Gmsh's own
+// map (Mesh.CompoundParametrization = 0) keeps the octree.
 
 #include <algorithm>
 #include <cstring>
@@ -11,7 +26,6 @@
 #include "SPoint3.h"
 #include "reparamHooks.h"
 #include "reparamOptions.h"
-#include "reparamUvLocate.h"
 #include "uvTriangleTree.h"
 
 namespace reparam {

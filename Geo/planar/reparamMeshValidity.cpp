@@ -22,7 +22,6 @@
 #include "reparamInputMesh.h"
 #include "reparamMesherFallback.h"
 #include "reparamMeshValidity.h"
-#include "reparamOptimizeFace.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
 

@@ -10,9 +10,9 @@
 #include "MVertex.h"
 #include "meshFidelity.h"
 #include "meshGFace.h"
+#include "reparamHooks.h"
 #include "reparamMeshValidity.h"
 #include "reparamMesherFallback.h"
-#include "reparamOptimizeFace.h"
 #include "reparamReport.h"
 
 namespace reparam {

@@ -27,7 +27,7 @@
 #include "triangleMerge.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceEdits.h"
-#include "reparamFaceMeshing.h"
+#include "reparamHooks.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamOptimizeAcrossCuts.h"
 #include "reparamPinchedNodes.h"

@@ -1,5 +1,8 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
+// Orientation of the new mesh of a discrete face (called from
+// orientMeshGFace, patches/0004, which declares it too).
+//
 // Orientation of the new mesh of a discrete face (hook in orientMeshGFace,
 // patches/0004). Gmsh orients a face's mesh from its first element alone,
 // by the normal of the input triangle under one of its nodes: one crease or
@@ -16,7 +19,6 @@
 #include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
-#include "reparamOrient.h"
 #include "reparamReport.h"
 
 using namespace reparam;

@@ -18,7 +18,7 @@
 #include "discretePatch.h"
 #include "mapChain.h"
 #include "patchLayout.h"
-#include "reparamStlInput.h"
+#include "reparamHooks.h"
 
 using namespace reparam;
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <gtest/gtest.h>
 #include "gmsh.h"
-#include "reparamStlInput.h"
+#include "reparamHooks.h"
 
 
 namespace {

@@ -12,6 +12,7 @@
 #include "MVertex.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
+#include "reparamHooks.h"
 #include "reparamOptimizeAcrossCuts.h"
 #include "testPatches.h"
 #include "triangleQuality.h"

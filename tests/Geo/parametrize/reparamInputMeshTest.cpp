@@ -10,6 +10,7 @@
 #include "boundaryStitch.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
+#include "reparamHooks.h"
 #include "reparamInputMesh.h"
 
 using namespace reparam;

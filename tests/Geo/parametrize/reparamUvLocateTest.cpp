@@ -10,9 +10,9 @@
 #include "MVertex.h"
 #include "SPoint2.h"
 #include "SPoint3.h"
-#include "reparamUvLocate.h"
+#include "reparamHooks.h"
+#include "reparamHooks.h"
 
-using namespace reparam;
 
 TEST(reparamUvLocate, pointOutsideGoesToTheClosestBoundaryPoint)
 {

@@ -8,6 +8,7 @@
 #include "gmshTestEnvironment.h"
 #include "MTriangle.h"
 #include "reparamBamg.h"
+#include "reparamHooks.h"
 #include "reparamMeshValidity.h"
 
 using namespace reparam;

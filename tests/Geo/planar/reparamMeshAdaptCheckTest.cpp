@@ -8,7 +8,7 @@
 #include "MTriangle.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
-#include "reparamMeshAdaptCheck.h"
+#include "reparamHooks.h"
 #include "reparamMeshValidity.h"
 #include "reparamMesherFallback.h"
 #include "testPatches.h"

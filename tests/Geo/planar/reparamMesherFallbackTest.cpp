@@ -9,6 +9,7 @@
 #include "MTriangle.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
+#include "reparamHooks.h"
 #include "reparamMeshValidity.h"
 #include "reparamMesherFallback.h"
 #include "testPatches.h"

@@ -13,9 +13,9 @@
 #include "MTriangle.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
-#include "reparamFaceMeshing.h"
 #include "testPatches.h"
 #include "triangleQuality.h"
+#include "reparamHooks.h"
 
 using namespace reparam;
 
