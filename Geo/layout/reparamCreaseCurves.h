@@ -44,7 +44,7 @@ bool reparamCreaseCurveHidden(const GEdge *ge);
 // Recombine): its crease curves taken out of it and their 1D meshes
 // deleted (Blossom pairs no triangles across an embedded curve, so the
 // pieces the creases close off must each have an even count of triangles:
-// "Perfect Match failed" on fertility); the end puts the curves back, those
+// else "Perfect Match failed"); the end puts the curves back, those
 // taken out for their size too
 void reparamHideCreaseCurvesFromQuads(GFace *gf);
 void reparamRestoreCreaseCurves(GFace *gf);

@@ -149,7 +149,7 @@ layoutParameters reparamLayoutParameters(const layoutMesh &mesh)
   // twice its area over its perimeter), whose curves would nearly touch
   // (Gmsh: "intersections in the 1D mesh") and pinch its neighbours. Small
   // patches of CAD faces are not noise: merged, their corners and creases
-  // are lost (featuretype: Hausdorff distance 1.1 -> 3.1 %). A patch is
+  // are lost (bench/README.md, "Patch layout"). A patch is
   // noise only when small against the whole surface (1 %), so that the few
   // large faces of a coarse CAD triangulation never are.
   const double area = totalArea(mesh);
@@ -199,8 +199,7 @@ namespace {
     // A patch much larger than its boundary (a sock: a tube closed at one
     // end): the planar mesher starts from the boundary nodes and measures
     // edges by their chords, so it leaves the patch nearly empty
-    // (gmsh2x_falcon1: a face of 3 triangles, 17 % of the diagonal from the
-    // input)
+    // (bench/README.md, "Patch layout")
     const double largeness = boundaryLargeness(xyz, nodes);
     char s[128];
     if(largeness > reparamMaxLargeness) {
@@ -279,7 +278,7 @@ namespace {
   }
 
   // The nodes where three cut edges or more meet: where two boundary loops
-  // touch (gmsh2x_car_body), or a cut ends on another. Gmsh ends its curves
+  // touch, or a cut ends on another. Gmsh ends its curves
   // only where the edges of one pair of faces branch, so two curves could
   // pass through such a node without a model point there, and their meshes
   // would not meet: Gmsh's classification asks reparamBreakCurveAt

@@ -366,7 +366,7 @@ namespace {
   // The triangles against the input the faces' own records count (each
   // against its own input: a face narrower than the size judged against
   // its neighbours' input too may find its triangles over a fold or spike
-  // of theirs pointing against it, adis16480 with noise: 2 -> 25), or
+  // of theirs pointing against it: bench/README.md, "Across the cuts"), or
   // `fallback` when a face has none
   std::size_t againstRecorded(const std::vector<optimizationRecord> &records,
                               std::size_t fallback)
@@ -433,7 +433,7 @@ namespace {
     o.collapseBelow = getReparamOptions().optimize >= 2 ? 0.6 : 0.;
     // the faces' own optimization inserted the input nodes their meshes cut
     // off; here an input node by a cut would come in at the cost of the
-    // worst triangle (camelhead at the input's edge length: 0.28 -> 0.09)
+    // worst triangle (bench/README.md, "Across the cuts")
     o.insertAbove = 0.;
     o.knownAlong = alongByFace(g, before, reverse, m, nodes, triangleFace);
     const meshOptimizationResult r = optimizeOnInput(m, input, onInput, o);

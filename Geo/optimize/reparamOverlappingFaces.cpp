@@ -29,9 +29,8 @@ namespace {
     return std::minmax(a->getNum(), b->getNum());
   }
 
-  // The input's own edges of more than two triangles (gmsh2x_squirrel: two
-  // of one face and two of another), which the mesh of a curve along one
-  // keeps in pieces
+  // The input's own edges of more than two triangles (two of one face and
+  // two of another), which the mesh of a curve along one keeps in pieces
   std::vector<std::array<SPoint3, 2> > inputNonManifoldEdges(GModel *m)
   {
     std::map<edgeByCoordinates, int> uses;
@@ -212,14 +211,13 @@ namespace {
     return worst;
   }
 
-  // A face's input of slivers (sliverKappa) is no mesh to give it:
-  // adis16480's pins, a CAD triangulation's fans of triangles of kappa 2e-5,
-  // took its kappa min 0.041 -> 2e-5 and its kappa mean 0.918 -> 0.897; the
-  // flat pair is left, with a warning
+  // A face's input of slivers (sliverKappa) is no mesh to give it (a CAD
+  // triangulation's fans of triangles of kappa 2e-5: bench/README.md, "Bad
+  // input"); the flat pair is left, with a warning
 
   // Whether gf's input has a node off its boundary: one without gives the
-  // same triangles between its curves' nodes (pelvis_tlem2: a pocket of
-  // two input triangles a side)
+  // same triangles between its curves' nodes (a pocket of two input
+  // triangles a side)
   bool inputHasInnerNode(const GFace *gf)
   {
     const std::vector<int> &t = gf->stl_triangles;

@@ -52,7 +52,8 @@ struct reparamOptions {
   double meshSizeGradient = 0.5;
   // Mesh.CompoundMeshSizeFromStrips: with a gradient, the surfaces
   // narrower than the size give their curves sizes of their width
-  // (Mesh/sizes/narrowStrips.h); off by default (README *Sizes from the curves*)
+  // (Mesh/sizes/narrowStrips.h); off by default (bench/README.md,
+  // "Narrow strips")
   int meshSizeFromStrips = 0;
   // Mesh.CompoundCurvatureMetric: N > 0: anisotropic sizes 2 pi R / N along
   // the principal directions of the input's curvature (BAMG), the smaller

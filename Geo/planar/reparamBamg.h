@@ -5,17 +5,14 @@
 //
 // The most vertices BAMG may make for a face: BAMG builds its arrays for
 // that many at each of its calls, their constructors touching every page,
-// 900000 by default whatever the face. On a segmentation-like STL of 2317
-// faces (bench/make-segmentations.py, bone_binary) Mesh 2 took 279 s of
-// wall time for 83 s of CPU in Gmsh's count (66 s of system time, 29
-// million page faults in 100 s), each of BAMG's 5009 calls some 56 ms, on
-// faces of 9 to 100 vertices.
+// 900000 by default whatever the face: on the thousands of small faces of a
+// segmentation-like STL most of the time went to page faults
+// (bench/README.md, "BAMG").
 //
 // A face whose BAMG mesh fails: BAMG meshes the face Gmsh's Delaunay mesher
 // meshed first, and gave up on some faces of the segmentation-like STLs
-// (`we loss some 1 edges ... Fatal error in the meshgenerator 1100`: one
-// face of vessel_slices), which Gmsh reports as an error, the face keeping
-// that first mesh.
+// (`we loss some 1 edges ... Fatal error in the meshgenerator 1100`),
+// which Gmsh reports as an error, the face keeping that first mesh.
 
 #ifndef REPARAM_BAMG_H
 #define REPARAM_BAMG_H

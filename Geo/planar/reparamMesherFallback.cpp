@@ -109,8 +109,7 @@ bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
   gf->setMeshingAlgo(other);
   // Gmsh's meshers read the global algorithm too: under BAMG's, Delaunay's
   // point insertion takes no size field (meshGFaceDelaunayInsertion.cpp;
-  // fertility's faces BAMG left with holes got 2.7 times the triangles
-  // asked) nor MeshAdapt's the curves' sizes. The other mesher's, for this
+  // bench/README.md, "BAMG") nor MeshAdapt's the curves' sizes. The other mesher's, for this
   // mesh (BAMG's faces are meshed on one thread: Geo/planar/reparamFaceMeshing.h)
   const int global = CTX::instance()->mesh.algo2d;
   if(global == ALGO_2D_BAMG) CTX::instance()->mesh.algo2d = other;

@@ -467,8 +467,7 @@ namespace {
     quadSmoothingOptions o;
     // the edges kept near their mean at each node (the size asked, from
     // BGM_MeshSize, pulled the small quadrangles of the CAD parts' graded
-    // sizes: pelvis_tlem2's eta min 0.147 -> 0.077, 2 elements against
-    // the input; with the mean, 0.163 and none, and the same tau)
+    // sizes: bench/README.md, "Smoothing in the parametric plane")
     o.size = meanQuadEdgeAtPoints(m);
     const quadSmoothingResult r =
       smoothQuadsOnInput(m, movable, onInput, landing, o, &slides);
@@ -500,9 +499,8 @@ namespace {
   // (Mesh/quad/quadSplit.h) better than them, where both point the way most of
   // the face does; returns how many, their worst eta in `worst` and the
   // worst of their triangles' kappa in `worstKappa`. Better is all it takes
-  // (a floor of kappa 0.3 left armadillo's quadrangle of eta 0.108 at a
-  // 13-degree corner where two curves meet, whose triangles have kappa
-  // 0.184 and more)
+  // (a floor of kappa left the worst quadrangles at sharp corners where two
+  // curves meet: bench/README.md, "Quadrangles with a flat corner split")
   std::size_t splitQuadrangles(GFace *gf, double &worst, double &worstKappa)
   {
     if(gf->quadrangles.empty()) return 0;
@@ -596,8 +594,8 @@ namespace {
   }
 
   // mergeTriangles over the group's faces, into quadrangles no worse than
-  // mergeEta nor than the group's worst (aorta_gmsh's 0.503 fell to 0.437
-  // with the first alone); logs and reports what changed
+  // mergeEta nor than the group's worst (the first alone lowered the worst:
+  // bench/README.md, "Triangles left merged"); logs and reports what changed
   bool mergeGroupTriangles(const cutGroup &g)
   {
     double worst = 1.;

@@ -51,9 +51,8 @@ namespace {
 
   // ... by this ratio, the usual one for anisotropic metrics: with Gmsh's
   // 1.8 (Mesh.SmoothRatio, which is BAMG's, in the plane) the long elements
-  // along a vessel reach across its bends: Hausdorff distance 1.2-1.45
-  // times the isotropic mesh's on gmsh2x_bifurcation, aneurysm and
-  // aorta_gmsh, 0.97-1.16 times with 1.3, for 0.48-0.62 of its triangles
+  // along a vessel reach across its bends (bench/README.md, "The metric
+  // field")
   const double gradation = 1.3;
 
   bool applies(const GFace *gf)
@@ -98,10 +97,8 @@ namespace {
 
   // A curve's size: the smallest of its faces' metrics there, not the size
   // along it: the curve bends within the surface too (an open border,
-  // a cut), which the surface's curvature does not tell
-  // (gmsh2x_bifurcation's farthest input point, on a border: 0.0112 with
-  // the size along the curve, 0.0105 with the smallest; the isotropic
-  // mesh's, 0.0092)
+  // a cut), which the surface's curvature does not tell (bench/README.md,
+  // "The metric in Gmsh's size functions")
   double curveSize(GEdge *ge, const SPoint3 &p)
   {
     double size = noSize;

@@ -118,7 +118,7 @@ namespace {
   // creases it keeps), as sources of the curves'
   // sizes: the curve's nodes there get about that distance apart, and the
   // face's sizes grow from them, instead of one triangle across at the
-  // size (camelhead: two tips 0.3 sizes from a crease, kappa 0.42). Not
+  // size (bench/README.md, "Sizes from the curves"). Not
   // below a twentieth of the size: a tip nearly on the curve is noise
   void pointsNearCurves(GModel *m, std::vector<SPoint3> &sources,
                         std::vector<double> &sizes)
@@ -209,9 +209,8 @@ namespace {
   // The strips of gf but those along a curve whose other face folds
   // within a quarter of the size beside it (a crease of 60 degrees or more
   // there, Mesh/layout/creaseChains.h): that face's triangles on the curve's
-  // short segments reach over the fold (adis16480: a slot 0.28 mm wide
-  // and 0.13 mm deep, whose walls belong to the plate around, at the size
-  // 1.5 mm: the plate's triangle on its end segment turned over)
+  // short segments reach over the fold and turn over (bench/README.md,
+  // "Narrow strips")
   std::vector<stripWidth>
   keepUnfolded(GFace *gf, const surfaceMesh &input,
                const std::vector<stripWidth> &strips,

@@ -44,7 +44,7 @@ struct closestTriangleHit {
 // points of the triangles, whose search gathered every sample within the
 // best distance: for a query off the surface among tiny triangles (the
 // halfway points of a mesh triangle across a fold of a CAD STL) thousands of
-// them, so that one face of gmsh2x_king_ascii took a minute.
+// them (bench/README.md, "Report").
 class closestTriangleSearch {
 public:
   closestTriangleSearch(const std::vector<SPoint3> &points,

@@ -4,8 +4,8 @@
 // that are noise at the mesh scale: ClassifySurfaces' 40 degree test cuts
 // scans into patches of one or two triangles around noisy spikes and folded
 // input triangles; their corners pinch the large patches around them and
-// their short curves force tiny segments (camelhead: 10 patches of 1-2
-// triangles, armadillo: 74 smaller than the mesh size squared).
+// their short curves force tiny segments (bench/README.md, "Faces that are
+// noise at the mesh scale").
 
 #include <algorithm>
 #include <map>

@@ -54,8 +54,8 @@ meshFidelity compareToInput(const surfaceMesh &input, const surfaceMesh &output,
 // against their inputs taken together: the whole model's Hausdorff
 // distance. Face by face, an input node on a curve between two faces is as
 // far from its own face's mesh as the curve's chords are from the input's
-// zig-zag along it, while the neighbour's mesh covers it (tooth: 0.79 %
-// face by face, 0.24 % for the whole). With perMesh, also each face's
+// zig-zag along it, while the neighbour's mesh covers it (bench/README.md,
+// "Report"). With perMesh, also each face's
 // samples (its nodes and centroids, its input's) against the whole, in one
 // search.
 meshFidelity
