@@ -8,19 +8,9 @@
 #define REPARAM_OPTIONS_H
 
 #include <string>
+#include "mapKind.h"
 
 namespace reparam {
-
-// Values of Mesh.CompoundParametrization
-enum class compoundParametrization {
-  gmsh = 0, // Gmsh's own code (the reference)
-  harmonic = 1,
-  barycentric = 2,
-  meanValue = 3,
-  conformal = 4,
-  spectral = 5,
-  automatic = 6
-};
 
 struct reparamOptions {
   int parametrization = (int)compoundParametrization::automatic;
@@ -66,9 +56,6 @@ struct reparamOptions {
 };
 
 reparamOptions &getReparamOptions();
-
-// "mean value", "spectral conformal"...; "unknown" outside 0..6
-const char *compoundParametrizationName(int value);
 
 } // namespace reparam
 

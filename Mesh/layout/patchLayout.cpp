@@ -4,9 +4,9 @@
 #include <condition_variable>
 #include <mutex>
 #include <thread>
-#include "OS.h"
 #include "SVector3.h"
 #include "patchLayout.h"
+#include "stageTimer.h"
 #include "triangleAdjacency.h"
 
 namespace reparam {
@@ -210,7 +210,7 @@ layoutResult computePatchLayout(const layoutMesh &mesh,
   layoutResult result;
   result.patch.assign(mesh.triangles.size(), -1);
   if(mesh.triangles.empty()) return result;
-  double t0 = TimeOfDay();
+  double t0 = wallSeconds();
   triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
   std::vector<char> feature = featureEdgeFlags(mesh, adjacency);
   int numPatches = 0;
@@ -219,7 +219,7 @@ layoutResult computePatchLayout(const layoutMesh &mesh,
   result.mergedNoise =
     mergeNoisePatches(mesh, adjacency, parameters, patch, numPatches);
   result.cleanedPatches = numPatches;
-  double t1 = TimeOfDay();
+  double t1 = wallSeconds();
 
   std::vector<pendingPart> stack(numPatches);
   for(std::size_t t = 0; t < patch.size(); t++)
@@ -242,7 +242,7 @@ layoutResult computePatchLayout(const layoutMesh &mesh,
       result.cutEdges.push_back(adjacency.edges[e]);
   }
   result.cleanTime = t1 - t0;
-  result.splitTime = TimeOfDay() - t1;
+  result.splitTime = wallSeconds() - t1;
   return result;
 }
 } // namespace reparam

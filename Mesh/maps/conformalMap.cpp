@@ -1,10 +1,10 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <Eigen/Eigenvalues>
-#include "OS.h"
 #include "conformalAssembly.h"
 #include "conformalMap.h"
 #include "dirichletSolve.h"
+#include "stageTimer.h"
 
 namespace reparam {
 
@@ -88,21 +88,21 @@ patchMap conformalMap(const discretePatch &patch, std::array<int, 2> pins)
 {
   patchMap map;
   const std::size_t n = patch.points.size();
-  double t0 = TimeOfDay();
+  double t0 = wallSeconds();
   Eigen::SparseMatrix<std::complex<double> > H = assembleConformalEnergy(patch);
   Eigen::MatrixXcd z = Eigen::MatrixXcd::Zero(n, 1);
   std::vector<char> isFixed(n, 0);
   z(pins[0], 0) = -1.;
   z(pins[1], 0) = 1.;
   isFixed[pins[0]] = isFixed[pins[1]] = 1;
-  double t1 = TimeOfDay();
+  double t1 = wallSeconds();
   if(pins[0] == pins[1])
     map.error = reparamFailure(reparamStatus::solverFailed,
                                "the two pinned nodes are the same");
   else
     map.error = dirichletSolve(H, isFixed, z);
   map.assembleTime = t1 - t0;
-  map.solveTime = TimeOfDay() - t1;
+  map.solveTime = wallSeconds() - t1;
   if(map.error.ok()) {
     map.uv.resize(2 * n);
     for(std::size_t i = 0; i < n; i++) {
@@ -115,9 +115,9 @@ patchMap conformalMap(const discretePatch &patch, std::array<int, 2> pins)
 
 patchMap conformalMap(const discretePatch &patch)
 {
-  double t0 = TimeOfDay();
+  double t0 = wallSeconds();
   std::array<int, 2> pins = farthestBoundaryPair(patch);
-  double t1 = TimeOfDay();
+  double t1 = wallSeconds();
   patchMap map = conformalMap(patch, pins);
   map.assembleTime += t1 - t0;
   return map;

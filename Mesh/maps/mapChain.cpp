@@ -1,13 +1,13 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
-#include "OS.h"
 #include "barycentricMap.h"
 #include "conformalMap.h"
 #include "harmonicMap.h"
 #include "mapChain.h"
+#include "mapKind.h"
 #include "meanValueMap.h"
-#include "reparamOptions.h"
 #include "spectralConformalMap.h"
+#include "stageTimer.h"
 
 namespace reparam {
 
@@ -55,9 +55,9 @@ checkedMap runMapChain(const discretePatch &patch,
   for(std::size_t s = 0; s < steps.size(); s++) {
     mapAttempt attempt;
     attempt.map = steps[s].map;
-    double t0 = TimeOfDay();
+    double t0 = wallSeconds();
     patchMap map = steps[s].compute(patch);
-    double t1 = TimeOfDay();
+    double t1 = wallSeconds();
     attempt.mapTime = t1 - t0;
     attempt.error = map.error;
     if(map.error.ok()) {
@@ -76,7 +76,7 @@ checkedMap runMapChain(const discretePatch &patch,
       attempt.foldsAfter = report.numFolds;
       attempt.degenerateAfter = report.degenerateTriangles.size();
     }
-    attempt.checkTime = TimeOfDay() - t1;
+    attempt.checkTime = wallSeconds() - t1;
     result.attempts.push_back(attempt);
     if(!map.error.ok()) continue;
     // a one-to-one result beats any other; among them, fewer degenerate

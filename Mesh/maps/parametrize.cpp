@@ -1,21 +1,14 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
-#include <chrono>
 #include "holeFilling.h"
 #include "mapCache.h"
+#include "mapKind.h"
 #include "parametrize.h"
-#include "reparamOptions.h"
+#include "stageTimer.h"
 
 namespace reparam {
 
 namespace {
-
-  double secondsSince(std::chrono::steady_clock::time_point t0)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                         t0)
-      .count();
-  }
 
   // The patch and the triangles filling its holes as one patch, on the same
   // nodes (its (u, v) are the patch's)
@@ -82,10 +75,10 @@ parametrization parametrize(const discretePatch &patch,
                             const parametrizeOptions &o)
 {
   parametrization p;
-  const auto t0 = std::chrono::steady_clock::now();
+  const double t0 = wallSeconds();
   discretePatch extended;
   const discretePatch &mapped = mappedPatch(patch, o, extended, p);
-  p.fillTime = secondsSince(t0);
+  p.fillTime = wallSeconds() - t0;
 
   const std::vector<mapStep> steps = mapChain(o.map);
   if(steps.empty()) {

@@ -1,10 +1,10 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <cmath>
-#include "OS.h"
 #include "conformalAssembly.h"
 #include "generalizedEigenSolve.h"
 #include "spectralConformalMap.h"
+#include "stageTimer.h"
 
 namespace reparam {
 
@@ -12,7 +12,7 @@ patchMap spectralConformalMap(const discretePatch &patch, spectralMapInfo *info)
 {
   patchMap map;
   const std::size_t n = patch.points.size();
-  double t0 = TimeOfDay();
+  double t0 = wallSeconds();
   Eigen::SparseMatrix<std::complex<double> > H = assembleConformalEnergy(patch);
   Eigen::VectorXd B = Eigen::VectorXd::Zero(n);
   std::size_t numBoundary = 0;
@@ -31,10 +31,10 @@ patchMap spectralConformalMap(const discretePatch &patch, spectralMapInfo *info)
   // with -1 / (boundary nodes). It only has to make L - shift B definite
   // along the translations, which are projected out anyway.
   const double shift = -1e-4 / (double)numBoundary;
-  double t1 = TimeOfDay();
+  double t1 = wallSeconds();
   eigenpairResult eig = smallestGeneralizedEigenpair(H, B, translations, shift);
   map.assembleTime = t1 - t0;
-  map.solveTime = TimeOfDay() - t1;
+  map.solveTime = wallSeconds() - t1;
   if(info) {
     info->lambda = eig.lambda;
     info->iterations = eig.iterations;
