@@ -9,6 +9,7 @@
 #include "faceQuality.h"
 #include "meshFidelity.h"
 #include "quadQuality.h"
+#include "reparamSurfaceMesh.h"
 #include "reparamViews.h"
 #include "triangleQuality.h"
 

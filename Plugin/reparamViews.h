@@ -8,7 +8,7 @@
 
 #include <string>
 #include <vector>
-#include "meshFidelity.h"
+#include "surfaceMesh.h"
 
 class PView;
 

@@ -45,6 +45,7 @@
 #include "meshFidelity.h"
 #include "faceQuality.h"
 #include "reparamReport.h"
+#include "reparamSurfaceMesh.h"
 
 using namespace reparam;
 

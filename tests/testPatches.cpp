@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
-#include "meshFidelity.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 #include "triangleQuality.h"
 

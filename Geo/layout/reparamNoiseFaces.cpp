@@ -7,10 +7,11 @@
 #include "GModel.h"
 #include "GmshMessage.h"
 #include "MTriangle.h"
-#include "meshFidelity.h"
 #include "reparamLayout.h"
 #include "reparamNoiseFaces.h"
 #include "reparamOptimizableMesh.h"
+#include "reparamSurfaceMesh.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

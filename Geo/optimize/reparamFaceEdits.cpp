@@ -5,8 +5,8 @@
 #include "MQuadrangle.h"
 #include "MTriangle.h"
 #include "MVertex.h"
-#include "meshFidelity.h"
 #include "reparamFaceEdits.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -27,6 +27,7 @@
 #include "reparamSizeGrading.h"
 #include "reparamSlideCurveNodes.h"
 #include "reparamSmoothQuads.h"
+#include "reparamSurfaceMesh.h"
 
 namespace reparam {
 

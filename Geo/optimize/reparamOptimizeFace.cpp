@@ -17,7 +17,6 @@
 #include "MVertex.h"
 #include "OS.h"
 #include "closestTriangle.h"
-#include "meshFidelity.h"
 #include "reparamCurveMesh.h"
 #include "reparamHooks.h"
 #include "reparamInputMesh.h"
@@ -25,6 +24,8 @@
 #include "reparamCurvatureMetric.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamSurfaceMesh.h"
+#include "surfaceMesh.h"
 #include "surfaceMeshOptimizer.h"
 
 namespace reparam {

@@ -20,6 +20,7 @@
 #include "reparamOptimizableMesh.h"
 #include "reparamReport.h"
 #include "reparamSlideCurveNodes.h"
+#include "reparamSurfaceMesh.h"
 #include "triangleQuality.h"
 
 namespace reparam {

@@ -19,6 +19,7 @@
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
+#include "reparamSurfaceMesh.h"
 
 namespace reparam {
 

@@ -24,6 +24,7 @@
 #include "reparamMeshValidity.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
+#include "reparamSurfaceMesh.h"
 
 namespace reparam {
 

@@ -14,6 +14,7 @@
 #include "reparamMeshValidity.h"
 #include "reparamMesherFallback.h"
 #include "reparamReport.h"
+#include "reparamSurfaceMesh.h"
 
 namespace reparam {
 

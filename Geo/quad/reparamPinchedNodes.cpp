@@ -9,11 +9,11 @@
 #include "MQuadrangle.h"
 #include "MTriangle.h"
 #include "MVertex.h"
-#include "meshFidelity.h"
 #include "pinchedNodes.h"
 #include "quadQuality.h"
 #include "reparamFaceEdits.h"
 #include "reparamPinchedNodes.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

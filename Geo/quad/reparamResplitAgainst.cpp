@@ -15,6 +15,7 @@
 #include "reparamFaceEdits.h"
 #include "reparamOptimizableMesh.h"
 #include "reparamResplitAgainst.h"
+#include "reparamSurfaceMesh.h"
 #include "triangleQuality.h"
 
 namespace reparam {

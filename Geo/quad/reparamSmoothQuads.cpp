@@ -24,6 +24,7 @@
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
 #include "quadSplit.h"
+#include "reparamSurfaceMesh.h"
 #include "triangleMerge.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceEdits.h"

@@ -5,9 +5,10 @@
 #include "GFace.h"
 #include "efficiencyIndex.h"
 #include "faceQuality.h"
-#include "meshFidelity.h"
 #include "quadQuality.h"
-#include "triangleQuality.h"
+#include "reparamSurfaceMesh.h"
+#include "reparamTriangleQuality.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -20,6 +20,7 @@
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamSurfaceMesh.h"
 
 using namespace reparam;
 

@@ -18,6 +18,7 @@
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamSurfaceMesh.h"
 
 namespace reparam {
 

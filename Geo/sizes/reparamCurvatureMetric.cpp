@@ -11,11 +11,12 @@
 #include "GmshMessage.h"
 #include "OS.h"
 #include "curvatureMetric.h"
-#include "meshFidelity.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamSurfaceMesh.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

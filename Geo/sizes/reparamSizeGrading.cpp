@@ -20,7 +20,6 @@
 #include "creaseChains.h"
 #include "edgeByCoordinates.h"
 #include "gradedBoundarySize.h"
-#include "meshFidelity.h"
 #include "narrowStrips.h"
 #include "reparamCreaseCurves.h"
 #include "reparamCurveMesh.h"
@@ -28,6 +27,8 @@
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
+#include "reparamSurfaceMesh.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

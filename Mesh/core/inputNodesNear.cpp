@@ -3,7 +3,7 @@
 #include <set>
 #include "closestTriangle.h"
 #include "inputNodesNear.h"
-#include "meshFidelity.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

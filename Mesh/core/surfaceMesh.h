@@ -5,8 +5,8 @@
 // triangulation, a face's new mesh, a layout's triangles); what a stage adds
 // to it (topology, per-node data) lives beside it, not in a copy of it.
 
-#ifndef REPARAM_SURFACE_MESH_H
-#define REPARAM_SURFACE_MESH_H
+#ifndef SURFACE_MESH_H
+#define SURFACE_MESH_H
 
 #include <array>
 #include <vector>

@@ -1,8 +1,8 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <set>
-#include "meshFidelity.h"
 #include "pinchedNodes.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -1,7 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
-#include "meshFidelity.h"
 #include "quadConnectivity.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -6,12 +6,12 @@
 #include <set>
 #include "SVector3.h"
 #include "closestTriangle.h"
-#include "meshFidelity.h"
 #include "quadDiagonalCollapse.h"
 #include "quadConnectivity.h"
 #include "quadEdgeRotation.h"
 #include "quadFidelity.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -5,9 +5,9 @@
 #include <map>
 #include "SVector3.h"
 #include "closestTriangle.h"
-#include "meshFidelity.h"
 #include "quadEdgeRotation.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -5,9 +5,9 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "curveNodeSlide.h"
-#include "meshFidelity.h"
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "triangleQuality.h"
 
 namespace reparam {

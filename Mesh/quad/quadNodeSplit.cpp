@@ -9,12 +9,12 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "inputNodesNear.h"
-#include "meshFidelity.h"
 #include "quadConnectivity.h"
 #include "quadEdgeRotation.h"
 #include "quadFidelity.h"
 #include "quadNodeSplit.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -1,9 +1,9 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
-#include "meshFidelity.h"
 #include "quadQuality.h"
 #include "quadSplit.h"
+#include "surfaceMesh.h"
 #include "triangleQuality.h"
 
 namespace reparam {

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <map>
-#include "meshFidelity.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "triangleMerge.h"
 
 namespace reparam {

@@ -12,16 +12,7 @@
 #include "SPoint3.h"
 #include "surfaceMesh.h"
 
-class GFace;
-
 namespace reparam {
-
-// The triangles and quadrangles of a meshed face
-surfaceMesh surfaceMeshOf(const GFace *gf);
-
-// The input triangulation a discrete face was parametrized from (Gmsh keeps
-// it in GFace::stl_vertices_xyz / stl_triangles)
-surfaceMesh inputTriangulationOf(const GFace *gf);
 
 struct meshFidelity {
   std::size_t elements = 0;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include "SVector3.h"
-#include "meshFidelity.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -1,7 +1,5 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
-#include <algorithm>
-#include "MTriangle.h"
 #include "SVector3.h"
 #include "triangleQuality.h"
 
@@ -22,24 +20,5 @@ double triangleKappa(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2)
   return 4. * sines[0] * sines[1] * sines[2] / sum;
 }
 
-kappaStatistics computeKappaStatistics(const std::vector<MTriangle *> &t)
-{
-  kappaStatistics s;
-  s.triangles = t.size();
-  if(t.empty()) return s;
-  s.min = 1.;
-  std::size_t below = 0;
-  for(MTriangle *e : t) {
-    double k = triangleKappa(e->getVertex(0)->point(),
-                             e->getVertex(1)->point(),
-                             e->getVertex(2)->point());
-    s.min = std::min(s.min, k);
-    s.mean += k;
-    if(k < 0.3) below++;
-  }
-  s.mean /= t.size();
-  s.shareBelow03 = (double)below / t.size();
-  return s;
-}
 } // namespace reparam
 

@@ -9,8 +9,6 @@
 #include <vector>
 #include "SPoint3.h"
 
-class MTriangle;
-
 namespace reparam {
 
 // Eq. (3): kappa = 4 sin a sin b sin c / (sin a + sin b + sin c); 1 for the
@@ -23,13 +21,12 @@ double triangleKappa(const SPoint3 &p0, const SPoint3 &p1, const SPoint3 &p2);
 // to no face in place of its mesh (Geo/optimize/reparamOverlappingFaces.cpp)
 const double sliverKappa = 0.01;
 
+// Of a set of triangles (Geo/core/reparamTriangleQuality.h for Gmsh's)
 struct kappaStatistics {
   std::size_t triangles = 0;
   double min = 0., mean = 0.;
   double shareBelow03 = 0.; // fraction of triangles with kappa < 0.3
 };
-
-kappaStatistics computeKappaStatistics(const std::vector<MTriangle *> &t);
 
 } // namespace reparam
 

@@ -6,7 +6,7 @@
 #include "closestTriangle.h"
 #include "curvature.h"
 #include "curvatureMetric.h"
-#include "meshFidelity.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 

@@ -6,8 +6,8 @@
 #include "SVector3.h"
 #include "boxTree.h"
 #include "closestTriangle.h"
-#include "meshFidelity.h"
 #include "narrowStrips.h"
+#include "surfaceMesh.h"
 #include "triangleAdjacency.h"
 
 namespace reparam {

@@ -19,7 +19,8 @@
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "patchAssembly.h"
-#include "triangleQuality.h"
+#include "reparamSurfaceMesh.h"
+#include "reparamTriangleQuality.h"
 
 using namespace reparam;
 

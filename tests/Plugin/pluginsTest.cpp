@@ -15,6 +15,7 @@
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 #include "quadQuality.h"
+#include "reparamTriangleQuality.h"
 #include "reparamViews.h"
 #include "triangleQuality.h"
 

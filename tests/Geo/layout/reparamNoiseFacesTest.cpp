@@ -10,9 +10,9 @@
 #include "MTriangle.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
-#include "meshFidelity.h"
 #include "reparamLayout.h"
 #include "reparamNoiseFaces.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 #include "triangleQuality.h"
 

@@ -8,8 +8,8 @@
 #include "MVertex.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
-#include "meshFidelity.h"
 #include "reparamFaceEdits.h"
+#include "surfaceMesh.h"
 
 using namespace reparam;
 

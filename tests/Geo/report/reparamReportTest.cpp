@@ -14,7 +14,7 @@
 #include "gmshTestEnvironment.h"
 #include "reparamInputMesh.h"
 #include "reparamReport.h"
-#include "triangleQuality.h"
+#include "reparamTriangleQuality.h"
 
 using namespace reparam;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include "inputNodesNear.h"
-#include "meshFidelity.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

@@ -4,8 +4,8 @@
 // two elements of different edges or one that may not go stay
 
 #include <gtest/gtest.h>
-#include "meshFidelity.h"
 #include "pinchedNodes.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
-#include "meshFidelity.h"
 #include "quadDiagonalCollapse.h"
 #include "quadEdgeRotation.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

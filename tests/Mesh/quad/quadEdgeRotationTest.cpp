@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
-#include "meshFidelity.h"
 #include "quadEdgeRotation.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

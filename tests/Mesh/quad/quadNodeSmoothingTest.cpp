@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 #include "SVector3.h"
 #include "closestTriangle.h"
-#include "meshFidelity.h"
 #include "quadNodeSmoothing.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

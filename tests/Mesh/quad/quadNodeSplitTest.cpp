@@ -7,10 +7,10 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include "closestTriangle.h"
-#include "meshFidelity.h"
 #include "quadEdgeRotation.h"
 #include "quadNodeSplit.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
-#include "meshFidelity.h"
 #include "quadQuality.h"
 #include "quadSplit.h"
+#include "surfaceMesh.h"
 #include "triangleQuality.h"
 
 using namespace reparam;

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
-#include "meshFidelity.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 #include "triangleMerge.h"
 

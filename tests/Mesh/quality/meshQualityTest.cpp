@@ -3,8 +3,8 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include "efficiencyIndex.h"
-#include "meshFidelity.h"
 #include "quadQuality.h"
+#include "surfaceMesh.h"
 #include "testPatches.h"
 
 using namespace reparam;

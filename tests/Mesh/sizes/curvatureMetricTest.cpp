@@ -4,7 +4,6 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include "curvatureMetric.h"
-#include "meshFidelity.h"
 #include "testPatches.h"
 
 using namespace reparam;

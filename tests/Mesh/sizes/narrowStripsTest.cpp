@@ -4,8 +4,8 @@
 #include <functional>
 #include <gtest/gtest.h>
 #include <map>
-#include "meshFidelity.h"
 #include "narrowStrips.h"
+#include "surfaceMesh.h"
 
 using namespace reparam;
 
