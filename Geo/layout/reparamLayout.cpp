@@ -21,6 +21,7 @@
 #include "GModelParametrize.h"
 #include "GmshMessage.h"
 #include "OS.h"
+#include "edgeUses.h"
 #include "patchLayout.h"
 #include "reparamConePoints.h"
 #include "reparamCurveMesh.h"
@@ -64,20 +65,15 @@ void areaAndBoundaryLength(const std::vector<SPoint3> &xyz,
                            const std::vector<int> &triangleNodes, double &area,
                            double &length)
 {
-  std::map<std::pair<int, int>, int> uses;
   area = 0.;
   for(std::size_t t = 0; t + 2 < triangleNodes.size(); t += 3) {
     const int *n = &triangleNodes[t];
     area += 0.5 * crossprod(SVector3(xyz[n[0]], xyz[n[1]]),
                             SVector3(xyz[n[0]], xyz[n[2]]))
                     .norm();
-    for(int k = 0; k < 3; k++) {
-      int a = n[k], b = n[(k + 1) % 3];
-      uses[std::make_pair(std::min(a, b), std::max(a, b))]++;
-    }
   }
   length = 0.;
-  for(const auto &e : uses)
+  for(const auto &e : edgeUsesOf(triangleNodes))
     if(e.second == 1)
       length += xyz[e.first.first].distance(xyz[e.first.second]);
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <set>
 #include "GEdge.h"
 #include "GFace.h"
@@ -28,6 +27,7 @@
 #include "reparamSlideCurveNodes.h"
 #include "reparamSmoothQuads.h"
 #include "reparamSurfaceMesh.h"
+#include "unionFind.h"
 
 namespace reparam {
 
@@ -67,12 +67,6 @@ namespace {
         trusted[triangleFace[t]] && !near[c[0]] && !near[c[1]] && !near[c[2]];
     }
     return along;
-  }
-
-  int rootOf(std::vector<int> &parent, int i)
-  {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
   }
 
   // The inputs of the faces as one triangulation; inputFace[t]: the index in
@@ -485,8 +479,7 @@ facesJoinedBy(GModel *m, const std::function<bool(GFace *)> &member,
       index[*it] = (int)faces.size();
       faces.push_back(*it);
     }
-  std::vector<int> parent(faces.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  unionFind sets(faces.size());
   std::vector<bool> joined(faces.size(), false);
   std::vector<GEdge *> cuts;
   for(auto it = m->firstEdge(); it != m->lastEdge(); ++it) {
@@ -497,16 +490,15 @@ facesJoinedBy(GModel *m, const std::function<bool(GFace *)> &member,
        !joins(ge))
       continue;
     const int a = index[sides[0]], b = index[sides[1]];
-    parent[rootOf(parent, a)] = rootOf(parent, b);
+    sets.join(a, b);
     joined[a] = joined[b] = true;
     if(crossable(ge)) cuts.push_back(ge);
   }
   std::map<int, cutGroup> groups;
   for(std::size_t f = 0; f < faces.size(); f++)
-    if(joined[f] || alone)
-      groups[rootOf(parent, (int)f)].faces.push_back(faces[f]);
+    if(joined[f] || alone) groups[sets.find((int)f)].faces.push_back(faces[f]);
   for(GEdge *ge : cuts)
-    groups[rootOf(parent, index[ge->faces()[0]])].cuts.push_back(ge);
+    groups[sets.find(index[ge->faces()[0]])].cuts.push_back(ge);
   std::vector<cutGroup> list;
   for(auto &g : groups) list.push_back(g.second);
   return list;

@@ -12,6 +12,7 @@
 #include "MVertex.h"
 #include "SVector3.h"
 #include "edgeByCoordinates.h"
+#include "edgeUses.h"
 #include "reparamHooks.h"
 #include "reparamInputMesh.h"
 #include "reparamOverlappingFaces.h"
@@ -221,12 +222,8 @@ namespace {
   bool inputHasInnerNode(const GFace *gf)
   {
     const std::vector<int> &t = gf->stl_triangles;
-    std::map<std::pair<int, int>, int> uses;
-    for(std::size_t i = 0; i + 2 < t.size(); i += 3)
-      for(int k = 0; k < 3; k++)
-        uses[std::minmax(t[i + k], t[i + (k + 1) % 3])]++;
     std::set<int> boundary, all(t.begin(), t.end());
-    for(const auto &u : uses)
+    for(const auto &u : edgeUsesOf(t))
       if(u.second == 1) {
         boundary.insert(u.first.first);
         boundary.insert(u.first.second);

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include "SVector3.h"
 #include "discretePatch.h"
+#include "unionFind.h"
 
 namespace reparam {
 
@@ -107,12 +107,6 @@ namespace {
     return sides;
   }
 
-  int findRoot(std::vector<int> &parent, int i)
-  {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-
 } // namespace
 
 reparamError makeDiscretePatch(std::vector<SPoint3> points,
@@ -168,16 +162,14 @@ reparamError makeDiscretePatch(std::vector<SPoint3> points,
   if(flipped) sides = sortedSides(triangles, nv);
 
   // Connected components, through shared edges
-  std::vector<int> parent(triangles.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  unionFind sets(triangles.size());
   for(std::size_t i = 0; i + 1 < sides.size(); i++) {
     if(sides[i].lo == sides[i + 1].lo && sides[i].hi == sides[i + 1].hi)
-      parent[findRoot(parent, sides[i].triangle)] =
-        findRoot(parent, sides[i + 1].triangle);
+      sets.join(sides[i].triangle, sides[i + 1].triangle);
   }
-  int root = findRoot(parent, 0);
+  int root = sets.find(0);
   for(std::size_t t = 1; t < triangles.size(); t++) {
-    if(findRoot(parent, t) != root)
+    if(sets.find((int)t) != root)
       return reparamFailure(reparamStatus::severalComponents,
                             triangleName(t) + " is not connected to " +
                               triangleName(0));

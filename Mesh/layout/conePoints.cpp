@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include "SVector3.h"
 #include "conePoints.h"
+#include "edgeUses.h"
 
 namespace reparam {
 
@@ -26,14 +26,12 @@ std::vector<int> conePoints(const std::vector<SPoint3> &points,
 {
   std::vector<double> angleSum(points.size(), 0.);
   std::vector<bool> onBoundary(points.size(), false);
-  std::map<std::pair<int, int>, int> edgeUses;
   for(const auto &t : triangles)
     for(int j = 0; j < 3; j++) {
       const int a = t[j], b = t[(j + 1) % 3], c = t[(j + 2) % 3];
       angleSum[a] += angleAt(points[a], points[b], points[c]);
-      edgeUses[std::make_pair(std::min(a, b), std::max(a, b))]++;
     }
-  for(const auto &e : edgeUses)
+  for(const auto &e : edgeUsesOf(triangles))
     if(e.second != 2) onBoundary[e.first.first] = onBoundary[e.first.second] = true;
   std::vector<bool> used(points.size(), false);
   for(const auto &t : triangles)

@@ -9,20 +9,14 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <queue>
 #include "patchLayout.h"
 #include "triangleAdjacency.h"
+#include "unionFind.h"
 
 namespace reparam {
 
 namespace {
-
-  int findRoot(std::vector<int> &parent, int i)
-  {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
 
   // A patch being merged: its triangles, area and perimeter (the length of
   // its edges on a boundary, a feature or another patch)
@@ -47,18 +41,17 @@ std::vector<int> featurePatches(const layoutMesh &mesh,
                                 int &numPatches)
 {
   const int nt = (int)mesh.triangles.size();
-  std::vector<int> parent(nt);
-  std::iota(parent.begin(), parent.end(), 0);
+  unionFind sets(nt);
   for(std::size_t e = 0; e < adjacency.edges.size(); e++) {
     if(featureEdge[e] || adjacency.numTriangles(e) != 2) continue;
     int a = adjacency.edgeTriangles[adjacency.edgeStart[e]];
     int b = adjacency.edgeTriangles[adjacency.edgeStart[e] + 1];
-    parent[findRoot(parent, a)] = findRoot(parent, b);
+    sets.join(a, b);
   }
   std::vector<int> index(nt, -1), patch(nt);
   numPatches = 0;
   for(int t = 0; t < nt; t++) {
-    int r = findRoot(parent, t);
+    int r = sets.find(t);
     if(index[r] < 0) index[r] = numPatches++;
     patch[t] = index[r];
   }

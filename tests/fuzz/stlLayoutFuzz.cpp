@@ -16,6 +16,7 @@
 #include "GmshMessage.h"
 #include "SBoundingBox3d.h"
 #include "discretePatch.h"
+#include "edgeUses.h"
 #include "mapChain.h"
 #include "patchLayout.h"
 #include "reparamHooks.h"
@@ -63,12 +64,9 @@ namespace {
       }
       if(t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) m.triangles.push_back(t);
     }
-    std::map<std::array<int, 2>, int> uses;
-    for(const auto &t : m.triangles)
-      for(int k = 0; k < 3; k++)
-        uses[{{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}}]++;
-    for(const auto &e : uses)
-      if(e.second != 2) m.featureEdges.push_back(e.first);
+    for(const auto &e : edgeUsesOf(m.triangles))
+      if(e.second != 2)
+        m.featureEdges.push_back({{e.first.first, e.first.second}});
     return m;
   }
 
