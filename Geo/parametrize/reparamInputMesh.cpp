@@ -25,9 +25,8 @@ namespace reparam {
 
 namespace {
 
-  struct inputTriangulation {
-    std::vector<SPoint3> points;
-    std::vector<std::array<int, 3> > triangles;
+  // A face's input triangles (no quadrangles), and what it keeps of them
+  struct inputTriangulation : surfaceMesh {
     std::vector<int> labels; // the curve or corner of each point
     std::size_t leftOut = 0; // triangles with invalid coordinates
   };
@@ -277,10 +276,8 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
                                  const std::string &reason)
 {
   if(gf->stl_triangles.empty() || !gf->quadrangles.empty()) return false;
-  const surfaceMesh in = inputTriangulationOf(gf);
   inputTriangulation input;
-  input.points = in.points;
-  input.triangles = in.triangles;
+  static_cast<surfaceMesh &>(input) = inputTriangulationOf(gf);
   std::vector<MVertex *> boundary;
   const stitchedTriangulation stitched = stitchToCurves(gf, input, boundary);
   if(stitched.unplacedNodes || stitched.keptInputNodes ||
@@ -293,7 +290,7 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
   candidate.points = input.points;
   for(MVertex *v : boundary) candidate.points.push_back(v->point());
   candidate.triangles = stitched.triangles;
-  if(countInverted(in, candidate) > against) return false;
+  if(countInverted(input, candidate) > against) return false;
   meshWithStitched(gf, input, stitched, boundary);
   {
     std::lock_guard<std::mutex> lock(facesMutex());

@@ -11,14 +11,13 @@
 #include <vector>
 #include "SPoint3.h"
 #include "reparamStatus.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 
-struct discretePatch {
-  std::vector<SPoint3> points;
-  // Node indices, all oriented alike (makeDiscretePatch reorients the ones
-  // that disagree with the first triangle)
-  std::vector<std::array<int, 3> > triangles;
+// The nodes and triangles (no quadrangles), the triangles all oriented
+// alike (makeDiscretePatch reorients the ones that disagree with the first)
+struct discretePatch : surfaceMesh {
   // Unique edges (lo, hi), lo < hi, sorted
   std::vector<std::array<int, 2> > edges;
   // triangleEdges[t][k]: the edge of nodes k and k + 1 (mod 3) of triangle t

@@ -17,12 +17,12 @@
 #include <string>
 #include <vector>
 #include "SPoint3.h"
+#include "surfaceMesh.h"
 
 namespace reparam {
 
-struct layoutMesh {
-  std::vector<SPoint3> points;
-  std::vector<std::array<int, 3> > triangles;
+// The nodes and triangles (no quadrangles) of the surface to lay out
+struct layoutMesh : surfaceMesh {
   // Node pairs no patch may cross: sharp edges, boundaries. Non-manifold
   // edges are never crossed either.
   std::vector<std::array<int, 2> > featureEdges;

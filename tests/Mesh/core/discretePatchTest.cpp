@@ -138,3 +138,17 @@ TEST(discretePatch, rejectsClosedAndHandles)
   EXPECT_EQ(patch.genus(), 1);
   EXPECT_NE(err.what().find("genus 1"), std::string::npos);
 }
+
+TEST(discretePatch, isTheSurfaceMeshItWasBuiltFrom)
+{
+  // nodes and triangles kept as given (consistent already), no quadrangles:
+  // what reads a surfaceMesh reads the patch
+  const testTriangulation t = rectangleGrid(3, 2, 3., 2.);
+  const discretePatch patch = makePatchOrDie(t);
+  const surfaceMesh &mesh = patch;
+  EXPECT_EQ(mesh.points.size(), 12u);
+  EXPECT_EQ(mesh.numElements(), 12u);
+  EXPECT_TRUE(mesh.quadrangles.empty());
+  EXPECT_EQ(mesh.triangles, t.triangles);
+  EXPECT_EQ(patch.edges.size(), 23u);
+}
