@@ -3,7 +3,7 @@
 # Reparam's sources and tests (Gmsh's own files compile as stock), in its
 # own build folder (build-sanitize/, or $REPARAM_SANITIZE_DIR):
 #
-#   scripts/sanitize.sh [ctest arguments]     e.g. -R surfaceMeshOptimizer
+#   scripts/sanitize.sh [ctest arguments]     e.g. -R optimizeOnInput
 #
 # Any memory error or undefined behaviour in our code ends its test with a
 # report. Leaks are not checked (Gmsh keeps its model in globals until

@@ -1,7 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
 // The triangles of one or several meshed discrete faces as the
-// optimizableMesh of Mesh/optimize/surfaceMeshOptimizer.h, and what the optimizer
+// optimizableMesh of Mesh/optimize/optimizableMesh.h, and what the optimizer
 // needs to know of them: which nodes may move, which edges stay, the mesh
 // size asked at each node, and which way the triangles turn on the input.
 // Used for one face (Geo/optimize/reparamOptimizeFace.cpp) and for the faces a patch
@@ -12,7 +12,7 @@
 
 #include <functional>
 #include <vector>
-#include "surfaceMeshOptimizer.h"
+#include "optimizableMesh.h"
 
 class GEdge;
 class GFace;

@@ -13,6 +13,7 @@
 #include "OS.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
+#include "optimizeOnInput.h"
 #include "reparamCurveMesh.h"
 #include "reparamFaceEdits.h"
 #include "reparamHooks.h"

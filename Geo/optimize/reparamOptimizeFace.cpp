@@ -1,12 +1,11 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
 // The new mesh of a discrete face optimized on its input triangulation
-// (Mesh.CompoundOptimize; hook in discreteFace::mesh, patches/0001, after
-// the planar mesher and before the face's report): Mesh/optimize/surfaceMeshOptimizer
-// on the face's triangles, its curves' nodes and edges (boundary and
-// embedded) kept, and each moved or new node given the (u, v) the face's
-// parametric interface has for the input point it lies on, so that it still
-// maps it there.
+// (Mesh.CompoundOptimize; hook in discreteFace::mesh, patches/0001, after the
+// planar mesher and before the face's report): Mesh/optimize/optimizeOnInput.h
+// on the face's triangles, its curves' nodes and edges (boundary and embedded)
+// kept, and each moved or new node given the (u, v) the face's parametric
+// interface has for the input point it lies on, so that it still maps it there.
 
 #include <algorithm>
 #include <set>
@@ -17,6 +16,7 @@
 #include "MVertex.h"
 #include "OS.h"
 #include "closestTriangle.h"
+#include "optimizeOnInput.h"
 #include "reparamCurveMesh.h"
 #include "reparamHooks.h"
 #include "reparamInputMesh.h"
@@ -26,7 +26,6 @@
 #include "reparamReport.h"
 #include "reparamSurfaceMesh.h"
 #include "surfaceMesh.h"
-#include "surfaceMeshOptimizer.h"
 
 namespace reparam {
 

@@ -12,8 +12,7 @@ namespace reparam {
 namespace {
 
   // below this, the worst triangle of a ring is worth any loss to the others
-  // (gmsh2x_car_body: a corner's triangle 0.15 -> 0.27 costs its
-  // neighbours more than it gains)
+  // (bench/README.md, Curve nodes slid along their curves)
   const double sliver = 0.3;
 
   SVector3 normalOf(const SPoint3 &x, const SPoint3 &a, const SPoint3 &b)

@@ -36,8 +36,8 @@ struct curveNodeSlide {
 // the ring is highest, among an eighth of the way between them steps and
 // the polyline's nodes there: taken if it beats the worst kappa now by
 // `gain`, the ring's kappa summed falls by no more than its worst gains
-// unless that is below 0.3 (adis16480's kappa mean 0.894 -> 0.891 without
-// that; not falling at all: gmsh2x_car_body's worst 0.27 -> 0.15), no
+// unless that is below 0.3 (either rule alone lost a mesh its kappa mean or
+// its worst: bench/README.md, Curve nodes slid along their curves), no
 // triangle's normal turns by more than `maxTurn` (radians; 0:
 // none turns over), and the polyline between the node and each neighbour
 // stays within `sag` times the segment's length of it (or no farther than

@@ -5,7 +5,7 @@
 #include "closestTriangle.h"
 #include "farInputNodes.h"
 #include "meshFidelity.h"
-#include "surfaceMeshOptimizer.h"
+#include "optimizableMesh.h"
 #include "triangleQuality.h"
 #include "triangleSplit.h"
 

@@ -3,21 +3,19 @@
 // Inner edges of a new surface mesh much longer than the mesh size asked
 // there, split at the input point closest to their midpoint. The planar
 // mesher sizes triangles through the map's metric, which it samples: where
-// a conformal map shrinks a long protrusion of coarse input triangles
-// (gmsh2x_implant: input edges of 15-17 for a size of 2.9), Frontal-Delaunay
-// left edges of 15-19, 6 times the size, cutting a crease off by 0.4 of the
-// size.
+// a conformal map shrinks a long protrusion of coarse input triangles,
+// Frontal-Delaunay left edges 6 times the size, cutting a crease off
+// (bench/README.md, Optimization on the input).
 
 #ifndef LONG_EDGE_SPLIT_H
 #define LONG_EDGE_SPLIT_H
 
 #include <cstddef>
+#include "optimizableMesh.h"
 
 namespace reparam {
 
 class closestTriangleSearch;
-struct optimizableMesh;
-struct surfaceMesh;
 
 // Splits the inner edges of m (not locked) longer than `ratio` times the
 // mean of optimizableMesh::size at their ends, longest first, at most one

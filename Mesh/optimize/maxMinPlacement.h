@@ -1,12 +1,12 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
-// Where a node lifts the worst triangle around it most. The optimizer's
-// moves try a few places (the neighbours' centroid, the apex that makes the
-// worst triangle equilateral, halfway to each): in a tight spot each of
-// them lowers another triangle of the ring (gmsh2x_skull: a node between
-// two triangles of kappa 0.37 and 0.39 that every one of them trades). The
-// place that maximizes the worst kappa of the ring is searched instead, in
-// the ring's plane, by compass steps that halve when none is better.
+// Where a node lifts the worst triangle around it most. The optimizer's moves
+// try a few places (the neighbours' centroid, the apex that makes the worst
+// triangle equilateral, halfway to each): in a tight spot each of them lowers
+// another triangle of the ring (bench/README.md, Optimization on the input,
+// step 3). The place that maximizes the worst kappa of the ring is searched
+// instead, in the ring's plane, by compass steps that halve when none is
+// better.
 
 #ifndef MAX_MIN_PLACEMENT_H
 #define MAX_MIN_PLACEMENT_H

@@ -7,8 +7,8 @@
 #include "closestTriangle.h"
 #include "inputNodesNear.h"
 #include "meshFidelity.h"
+#include "optimizableMesh.h"
 #include "shortEdgeCollapse.h"
-#include "surfaceMeshOptimizer.h"
 #include "triangleQuality.h"
 
 namespace reparam {
@@ -74,8 +74,8 @@ namespace {
   // Whether the input nodes under the triangles around the collapse stay
   // within the tolerance of the new triangles, or no farther than they were
   // from the old ones: checking the removed point only, a collapse on a
-  // coarse curved input cut across the input between (pelvis_tlem2's
-  // Hausdorff distance 0.57 -> 0.83 % of the diagonal; with this, 0.48)
+  // coarse curved input cut across the input between (bench/README.md,
+  // Optimization on the input)
   bool collapser::keepsInputNodes(int keep, int gone, const SPoint3 &at,
                                   const std::vector<int> &ring,
                                   const std::vector<int> &removed,

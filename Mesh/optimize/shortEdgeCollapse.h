@@ -4,20 +4,19 @@
 // there, collapsed. The planar mesher sizes a face by its boundary too
 // (Mesh.MeshSizeExtendFromBoundary: the size interpolated from the curves'
 // segments), so that the short segments of the layout's many curves make
-// whole faces finer than asked (gmsh2x_squirrel: 42 000 triangles for a
-// size meant for 25 000), their edges off the size (tau 78 % on armadillo).
+// whole faces finer than asked, their edges off the size (bench/README.md,
+// Optimization on the input).
 
 #ifndef SHORT_EDGE_COLLAPSE_H
 #define SHORT_EDGE_COLLAPSE_H
 
 #include <cstddef>
 #include <vector>
+#include "optimizableMesh.h"
 
 namespace reparam {
 
 class closestTriangleSearch;
-struct optimizableMesh;
-struct surfaceMesh;
 
 // Collapses the inner edges of m (not locked) shorter than `ratio` times the
 // mean of optimizableMesh::size at their ends, shortest first: a movable end

@@ -8,7 +8,7 @@
 #include "closestTriangle.h"
 #include "flipRepair.h"
 #include "meshFidelity.h"
-#include "surfaceMeshOptimizer.h"
+#include "optimizableMesh.h"
 #include "tangledCavity.h"
 #include "triangleQuality.h"
 

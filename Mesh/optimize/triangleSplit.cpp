@@ -6,7 +6,7 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
-#include "surfaceMeshOptimizer.h"
+#include "optimizableMesh.h"
 #include "triangleQuality.h"
 #include "triangleSplit.h"
 

@@ -1,11 +1,11 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
-// Nodes added to a surface mesh being optimized (Mesh/optimize/surfaceMeshOptimizer):
-// a point inserted into a triangle (split in three) or onto an inner edge
-// (split with both its triangles), refused where a new triangle would point
-// against the input. Within one round of insertions a triangle changes at
-// most once, and its neighbours wait for the next round, so that the edges
-// found at the start of the round stay true.
+// Nodes added to a surface mesh being optimized
+// (Mesh/optimize/optimizeOnInput.h): a point inserted into a triangle (split in
+// three) or onto an inner edge (split with both its triangles), refused where a
+// new triangle would point against the input. Within one round of insertions a
+// triangle changes at most once, and its neighbours wait for the next round, so
+// that the edges found at the start of the round stay true.
 
 #ifndef TRIANGLE_SPLIT_H
 #define TRIANGLE_SPLIT_H

@@ -10,7 +10,7 @@
 #include "SVector3.h"
 #include "closestTriangle.h"
 #include "meshFidelity.h"
-#include "surfaceMeshOptimizer.h"
+#include "optimizableMesh.h"
 #include "tangledCavity.h"
 #include "testPatches.h"
 #include "triangleQuality.h"

@@ -6,48 +6,24 @@
 // triangle larger than the input's spans places where the map's Jacobian
 // changes (its corners' images are not where a uniform stretch puts them),
 // and thin folds and strips give slivers in 3D: on the shared scans most
-// triangles below kappa 0.3 have no edge on a curve. Every node moved lands
-// on the input (its closest point), and a change is kept only if it raises
-// the worst kappa of the triangles it touches, leaves none of them pointing
-// against the input, and takes none of them farther from the input than
-// they were (beyond a small share of their size).
+// triangles below kappa 0.3 have no edge on a curve (bench/README.md,
+// Optimization on the input). Every node moved lands on the input (its
+// closest point), and a change is kept only if it raises the worst kappa of
+// the triangles it touches, leaves none of them pointing against the input,
+// and takes none of them farther from the input than they were (beyond a
+// small share of their size). The steps live in Mesh/optimize/internal/
+// (flips, moves, smoothing sweeps, ring measures); this is their one entry.
 
-#ifndef SURFACE_MESH_OPTIMIZER_H
-#define SURFACE_MESH_OPTIMIZER_H
+#ifndef OPTIMIZE_ON_INPUT_H
+#define OPTIMIZE_ON_INPUT_H
 
-#include <array>
 #include <cstddef>
-#include <set>
-#include <utility>
 #include <vector>
-#include "SPoint3.h"
+#include "optimizableMesh.h"
 
 namespace reparam {
 
 class closestTriangleSearch;
-struct surfaceMesh;
-
-// A triangle mesh to optimize, with what must stay
-struct optimizableMesh {
-  std::vector<SPoint3> points;
-  std::vector<std::array<int, 3> > triangles; // consistently oriented
-  std::vector<bool> movable; // per point: an inner node, free to move
-  std::set<std::pair<int, int> > lockedEdges; // (i < j): never flipped
-  // per point, set by the optimizer: the input triangle a moved or new
-  // point lies on (-1: not moved), and the input node a new point was
-  // inserted at (-1: none)
-  std::vector<int> landing, inputNode;
-  // per triangle, set by the optimizer: whether it points against the input
-  // (each change leaves none of its new triangles so)
-  std::vector<bool> against;
-  // per point, the mesh size asked there (empty: no edge is split nor
-  // collapsed); a new point gets the mean of the corners of the triangle it
-  // splits
-  std::vector<double> size;
-  // per point and per triangle, the index it had when the optimizer began
-  // (-1: new); edge collapses remove points and triangles
-  std::vector<int> origin, triangleOrigin;
-};
 
 struct meshOptimizationOptions {
   // triangles below this kappa get their edges and inner corners tried
@@ -58,14 +34,12 @@ struct meshOptimizationOptions {
   double tolerance = 0.02;
   // ... unless the flip lifts a triangle below `sliver`: then this share
   // (a chord a fifth of its length off a curved input is better than a
-  // sliver there: gmsh2x_skull's worst triangle 0.26 -> 0.40, squirrel's
-  // 0.008 -> 0.031, no Hausdorff distance of the shared meshes larger)
+  // sliver there: bench/README.md, Flips of slivers)
   double sliver = 0.3, sliverTolerance = 0.2;
   // the same for a node move (the node stays on the input: the centroids
   // of the triangles around it move off a curved input by their sag, which
-  // grows as a sliver becomes a fat triangle of the same edges: with 0.02
-  // fertility's worst triangle stayed at kappa 0.31, with 0.1 it rose to
-  // 0.44 and its Hausdorff distance did not change)
+  // grows as a sliver becomes a fat triangle of the same edges;
+  // bench/README.md, Optimization on the input)
   double moveTolerance = 0.1;
   // the mesh's triangles turn against the input's (most of them do)
   bool reversed = false;
@@ -76,8 +50,8 @@ struct meshOptimizationOptions {
   // around are inserted (a crease or tip the mesh cuts off; 0: none)
   double insertAbove = 0.25;
   // inner edges longer than this times the size at their ends are split
-  // (Mesh/optimize/longEdgeSplit.h), those shorter than collapseBelow times it
-  // collapsed (Mesh/optimize/shortEdgeCollapse.h; 0: none)
+  // (Mesh/optimize/longEdgeSplit.h), those shorter than collapseBelow times
+  // it collapsed (Mesh/optimize/shortEdgeCollapse.h; 0: none)
   double splitAbove = 1.6, collapseBelow = 0.;
   int maxInsertionRounds = 3;
   // the flips and moves stop after this many searches of the input per
@@ -88,9 +62,8 @@ struct meshOptimizationOptions {
   // either, where the mean kappa of its ring rises by smoothGain, its worst
   // does not fall and none falls below the target: the rows of triangles
   // along the curves, which the frontal mesher left uneven and the
-  // targeted moves do not reach (fertility's kappa mean 0.956, its
-  // triangles over three rings from a curve 0.982; 3 sweeps: 0.970, its
-  // whole run 10-30 % slower), then the targeted flips and moves again
+  // targeted moves do not reach (bench/README.md, Smoothing), then the
+  // targeted flips and moves again
   int smoothPasses = 3;
   double smoothGain = 1e-3;
   // each sweep begins with flips of the edges whose four corners'
@@ -102,9 +75,9 @@ struct meshOptimizationOptions {
   // move, moveTolerance), and leaves the node's old place and the input's
   // points closest to the ring's centroids (on a crease under the feature
   // angle the mesh held, points of the crease) no farther from the ring
-  // than this share of its longest edge beyond where they were (0.05:
-  // gmsh2x_linkrod2's Hausdorff distance 0.48 -> 0.57 % of the diagonal;
-  // 0: no smoothing on a curved input)
+  // than this share of its longest edge beyond where they were (more lets
+  // the ring leave such a crease: bench/README.md, Smoothing; 0: no
+  // smoothing on a curved input)
   double smoothTolerance = 0.02;
 };
 
@@ -118,32 +91,28 @@ struct meshOptimizationResult {
   std::size_t inserted = 0, snapped = 0;
   std::size_t splits = 0; // long edges
   std::size_t collapses = 0; // short edges
-  std::size_t cavities = 0; // tangles re-meshed (Mesh/optimize/tangledCavity.h)
+  // tangles re-meshed (Mesh/optimize/tangledCavity.h)
+  std::size_t cavities = 0;
   std::size_t searches = 0; // of the input, by the flips and moves
 };
 
 // Optimizes m in place against the input triangulation `input` (searched by
-// onInput, built on it): inserts the inner input nodes the mesh cuts off
-// (Mesh/optimize/farInputNodes.h), splits the long edges (Mesh/optimize/longEdgeSplit.h) and
-// collapses the short ones (Mesh/optimize/shortEdgeCollapse.h), then flips edges not
-// locked and moves movable nodes to their neighbours' centroid (or halfway),
-// projected on the input, around the triangles below the target or pointing
-// against the input (which count as worse than any triangle along it), pass
-// after pass until a pass keeps no change; then again while nodes are added
+// onInput, built on it), in rounds while nodes are added: inserts the inner
+// input nodes the mesh cuts off (Mesh/optimize/farInputNodes.h), splits the
+// long edges (Mesh/optimize/longEdgeSplit.h) and collapses the short ones
+// (Mesh/optimize/shortEdgeCollapse.h), then flips edges not locked and
+// moves movable nodes, projected on the input, around the triangles below
+// the target or pointing against the input (which count as worse than any
+// triangle along it), pass after pass until a pass keeps no change; then
+// re-meshes the tangles left (Mesh/optimize/tangledCavity.h), and smooths
+// (o.smoothPasses sweeps) before the flips and moves once more.
+// m's triangles must turn the same way; the per-point and per-triangle
+// arrays it lacks are made (landing, inputNode -1, movable false, origin
+// and triangleOrigin the index now)
 meshOptimizationResult optimizeOnInput(optimizableMesh &m,
                                        const surfaceMesh &input,
                                        const closestTriangleSearch &onInput,
                                        const meshOptimizationOptions &o = {});
-
-// Removes the points and triangles of m marked dead, renumbering the rest
-// (every per-point and per-triangle array, the locked edges); returns the
-// new index of each point (-1: removed)
-std::vector<int> removeDeadParts(optimizableMesh &m,
-                                 const std::vector<bool> &deadPoint,
-                                 const std::vector<bool> &deadTriangle);
-
-// The worst kappa of m's triangles (1 without triangles)
-double worstKappa(const optimizableMesh &m);
 
 } // namespace reparam
 
