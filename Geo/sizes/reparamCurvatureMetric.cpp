@@ -1,8 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
-#include <map>
-#include <memory>
 #include <mutex>
 #include "Context.h"
 #include "GEdge.h"
@@ -16,6 +14,7 @@
 #include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 
 namespace reparam {
 
@@ -23,38 +22,19 @@ namespace {
 
   const double noSize = 1e22;
 
-  // A face's field, and what it was built for
-  struct faceField {
-    double n = 0., hMin = 0., hMax = 0., gradation = 0.;
-    std::size_t inputTriangles = 0;
-    std::unique_ptr<curvatureMetricField> field;
-  };
-
-  std::mutex &fieldsMutex()
-  {
-    static std::mutex m;
-    return m;
-  }
-
-  std::map<const GFace *, faceField> &fields()
-  {
-    static std::map<const GFace *, faceField> f;
-    return f;
-  }
-
-  // Mesh.SmoothRatio while a face is meshed by BAMG with the metric (-1: not
-  // changed): BAMG grades the metric in the (u, v) plane, where the map's
-  // conformal factor changes the sizes as much as the surface does (a tube
-  // mapped to an annulus: by e^z), so BAMG's own grading is off (a ratio
-  // below 1.1) and the metric is graded on the input instead
-  double userSmoothRatio = -1.;
-
-  // ... by this ratio, the usual one for anisotropic metrics: with Gmsh's
+  // The metric is graded on the input (reparamBeginAnisotropicMeshing) by
+  // this ratio, the usual one for anisotropic metrics: with Gmsh's
   // 1.8 (Mesh.SmoothRatio, which is BAMG's, in the plane) the long elements
   // along a vessel reach across its bends: Hausdorff distance 1.2-1.45
   // times the isotropic mesh's on gmsh2x_bifurcation, aneurysm and
   // aorta_gmsh, 0.97-1.16 times with 1.3, for 0.48-0.62 of its triangles
   const double gradation = 1.3;
+
+  curvatureFieldRecord &recordOf(const GFace *gf)
+  {
+    std::unique_lock<std::mutex> lock = lockRecords();
+    return faceRecordOf(gf).curvature;
+  }
 
   bool applies(const GFace *gf)
   {
@@ -74,8 +54,9 @@ namespace {
     sizes.hMin = CTX::instance()->mesh.lcMin;
     sizes.hMax = std::min(CTX::instance()->mesh.lcMax, CTX::instance()->lc);
     sizes.gradation = gradation;
-    std::lock_guard<std::mutex> lock(fieldsMutex());
-    faceField &f = fields()[gf];
+    // (built on the thread that asks first, not under lockRecords)
+    std::unique_lock<std::mutex> lock = lockCurvatureFields();
+    curvatureFieldRecord &f = recordOf(gf);
     const std::size_t triangles = gf->stl_triangles.size() / 3;
     if(f.field && f.n == sizes.elementsPerCircle && f.hMin == sizes.hMin &&
        f.hMax == sizes.hMax && f.gradation == sizes.gradation &&
@@ -155,8 +136,14 @@ bool reparamAnisotropicFace(const GFace *gf)
   return gf->getMeshingAlgo() == ALGO_2D_BAMG && applies(gf);
 }
 
+// Mesh.SmoothRatio while a face is meshed by BAMG with the metric (the
+// user's saved, -1: not changed): BAMG grades the metric in the (u, v)
+// plane, where the map's conformal factor changes the sizes as much as the
+// surface does (a tube mapped to an annulus: by e^z), so BAMG's own grading
+// is off (a ratio below 1.1) and the metric is graded on the input instead
 void reparamBeginAnisotropicMeshing(GFace *gf)
 {
+  double &userSmoothRatio = savedGmshOptions().smoothRatio;
   if(!reparamAnisotropicFace(gf) || userSmoothRatio >= 0.) return;
   userSmoothRatio = CTX::instance()->mesh.smoothRatio;
   CTX::instance()->mesh.smoothRatio = 1.;
@@ -164,6 +151,7 @@ void reparamBeginAnisotropicMeshing(GFace *gf)
 
 void reparamEndAnisotropicMeshing()
 {
+  double &userSmoothRatio = savedGmshOptions().smoothRatio;
   if(userSmoothRatio < 0.) return;
   CTX::instance()->mesh.smoothRatio = userSmoothRatio;
   userSmoothRatio = -1.;

@@ -14,6 +14,7 @@
 #include "gmshTestEnvironment.h"
 #include "reparamInputMesh.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 #include "triangleQuality.h"
 
 using namespace reparam;
