@@ -107,8 +107,8 @@ struct modelRecord {
   std::vector<std::pair<GFace *, int> > refusedSurfaces;
 };
 
-// Held while face or model records are made, found, or their fields read
-// or written
+// Held while face or model records are made, found or reset, and while
+// their fields are read or written where another thread may touch them
 std::unique_lock<std::mutex> lockRecords();
 // gf's record, made on first use; or null if there is none
 faceRecord &faceRecordOf(const GFace *gf);

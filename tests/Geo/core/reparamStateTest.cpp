@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <shared_mutex>
 #include <thread>
 #include <gtest/gtest.h>
 #include "GFace.h"
@@ -100,6 +102,33 @@ TEST(reparamState, aFaceRecordIsMadeFoundAndGoesWhenItsGeometryStarts)
   EXPECT_FALSE(made.parametrization);
   EXPECT_FALSE(made.optimization);
   EXPECT_EQ(made.curvature.field, nullptr);
+}
+
+TEST(reparamState, aParametrizationIsRecordedByFace)
+{
+  // the 4 x 4 grid's face: a record of its 25 nodes and 32 triangles is
+  // found, one of another size is not (a face made where a deleted one
+  // was), none after it is forgotten
+  createGeometryOf(rectangleGrid(4, 4, 1., 1.));
+  GFace *gf = parametrizedFaces().at(0);
+  parametrizationRecord r;
+  r.map = 3;
+  r.nodes = 25;
+  r.triangles = 32;
+  r.mapsTried = {5, 3};
+  recordParametrization(gf, &r);
+  const parametrizationRecord *found = findParametrization(gf);
+  ASSERT_NE(found, nullptr);
+  EXPECT_EQ(found->map, 3);
+  EXPECT_EQ(found->mapsTried, std::vector<int>({5, 3}));
+  r.nodes = 24;
+  recordParametrization(gf, &r);
+  EXPECT_EQ(findParametrization(gf), nullptr);
+  r.nodes = 25;
+  recordParametrization(gf, &r);
+  EXPECT_EQ(findParametrization(gf), found); // in place
+  recordParametrization(gf, nullptr);
+  EXPECT_EQ(findParametrization(gf), nullptr);
 }
 
 TEST(reparamState, recordsStayInPlaceWhileOthersAreMade)
@@ -240,4 +269,40 @@ TEST(reparamState, eachThreadHasItsOwnFaceMeshingContext)
   EXPECT_EQ(theirOptions, &savedGmshOptions());
   EXPECT_EQ(savedGmshOptions().crossFieldClosestPoint, -1);
   EXPECT_EQ(savedGmshOptions().smoothRatio, -1.);
+}
+
+TEST(reparamState, theLocksKeepOtherThreadsOut)
+{
+  // each lock held here: another thread cannot take it, then can
+  auto tryFromAnotherThread = [](std::mutex &m) {
+    bool taken = false;
+    std::thread other([&] {
+      taken = m.try_lock();
+      if(taken) m.unlock();
+    });
+    other.join();
+    return taken;
+  };
+  for(int which = 0; which < 3; which++) {
+    std::unique_lock<std::mutex> lock = which == 0 ? lockRecords() :
+                                        which == 1 ? lockReports() :
+                                                     lockCurvatureFields();
+    ASSERT_TRUE(lock.owns_lock());
+    EXPECT_FALSE(tryFromAnotherThread(*lock.mutex())) << which;
+    lock.unlock();
+    EXPECT_TRUE(tryFromAnotherThread(*lock.mutex())) << which;
+  }
+  // the curves' lock: shared by faces being meshed, alone for a split
+  curvesLock().lock_shared();
+  bool shared = false, alone = true;
+  std::thread other([&] {
+    shared = curvesLock().try_lock_shared();
+    if(shared) curvesLock().unlock_shared();
+    alone = curvesLock().try_lock();
+    if(alone) curvesLock().unlock();
+  });
+  other.join();
+  curvesLock().unlock_shared();
+  EXPECT_TRUE(shared);
+  EXPECT_FALSE(alone);
 }
