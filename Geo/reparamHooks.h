@@ -10,7 +10,8 @@
 // Threads: Gmsh meshes the faces of a model in parallel with
 // General.NumThreads > 1 (an OpenMP loop in Mesh/Generator.cpp); the face
 // hooks (Mesh2D) may then run on several threads at once, each for its own
-// face; every other hook runs on Gmsh's main thread.
+// face; every other hook runs on Gmsh's main thread. What Reparam keeps
+// between the hooks, and which thread touches what: Geo/core/reparamState.h.
 
 #ifndef REPARAM_HOOKS_H
 #define REPARAM_HOOKS_H
@@ -82,7 +83,8 @@ std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points);
 // 0012, Geo/GModelParametrize.cpp; Geo/layout) -------------------------------
 // Reparam's patch layout of the classified triangles (Mesh.CompoundLayout):
 // noise patches merged, every patch cut until its map is one-to-one; the
-// cuts' segments added to `lines`. 0: Gmsh's own split loop runs
+// cuts' segments added to `lines`. 0: Gmsh's own split loop runs. Either
+// way the last layout's record and gm's start anew (Geo/core/reparamState.h)
 int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines);
 // Whether a node where three cut edges or more of the layout meet ends the
 // curves through it
@@ -96,7 +98,8 @@ int reparamCheckParametrizable(const std::vector<MTriangle *> &triangles,
 // --- Parametrization: CreateGeometry, Compound Surface (patches/0001,
 // 0011, 0019, Geo/discreteFace.cpp, Geo/GModelParametrize.cpp;
 // Geo/parametrize) ----------------------------------------------------------
-// The start of gf's CreateGeometry: its records of an earlier geometry go
+// The start of gf's CreateGeometry: its record starts anew (what its earlier
+// geometry and meshes left goes; Geo/core/reparamState.h)
 void reparamBeginFaceGeometry(GFace *gf);
 // Whether Reparam's maps take gf although its input has triangles of gamma
 // down to minGamma (an Info, no Gmsh warning); false with Gmsh's own map
@@ -172,7 +175,7 @@ void reparamIntersectCurvatureMetric(GEntity *ge, double u, double x,
 // Whether the faces of m may be meshed in parallel (not under BAMG)
 bool reparamMeshInParallel(GModel *m, int dim);
 // Around a discrete face's planar mesh: its sizes and crease curves set up,
-// then taken down
+// then taken down (in the context of the thread meshing it)
 void reparamBeginFaceMeshing(GFace *gf);
 void reparamEndFaceMeshing(GFace *gf);
 // A face kept as its input triangles (reparamKeepInputMesh) meshed with
@@ -209,7 +212,8 @@ int reparamOptimizeMeshedModel(GModel *m);
 // gf's new mesh measured (meshed in `seconds`) for the model's report
 void reparamReportMeshedFace(GFace *gf, double seconds);
 // The report printed (Mesh.CompoundReport) and written
-// (Mesh.CompoundReportFile) once the model is meshed and oriented
+// (Mesh.CompoundReportFile) once the model is meshed and oriented; the face
+// reports gathered since the last one go
 void reparamReportMeshedModel(GModel *m);
 
 #endif

@@ -19,6 +19,7 @@
 #include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamSizeGrading.h"
+#include "reparamState.h"
 
 namespace reparam {
 
@@ -27,16 +28,9 @@ namespace {
   // The input nodes a curve's mesh took as corners, and which curve: two
   // curves through the same input node (non-manifold input) must not both
   // put a node there
-  typedef std::array<double, 3> pointByCoordinates;
-  struct cornerOwner {
-    const GModel *model;
-    int tag;
-    const GEdge *curve;
-  };
   std::map<pointByCoordinates, cornerOwner> &takenCorners()
   {
-    static std::map<pointByCoordinates, cornerOwner> corners;
-    return corners;
+    return lastLayout().takenCorners;
   }
 
   // Whether another curve of ge's model holds the corner (a curve of a
@@ -48,11 +42,7 @@ namespace {
            m->getEdgeByTag(owner.tag) == owner.curve;
   }
 
-  std::set<edgeByCoordinates> &smoothCuts()
-  {
-    static std::set<edgeByCoordinates> cuts;
-    return cuts;
-  }
+  std::set<edgeByCoordinates> &smoothCuts() { return lastLayout().smoothCuts; }
 
   // Whether most segments of the polyline are smooth cuts of the layout
   bool isSmoothCut(const std::vector<SPoint3> &polyline)
@@ -66,11 +56,7 @@ namespace {
 
   // The input edges no mesh may cross: sharp (Gmsh's classification
   // lines), border and non-manifold ones
-  std::set<edgeByCoordinates> &fixedEdges()
-  {
-    static std::set<edgeByCoordinates> edges;
-    return edges;
-  }
+  std::set<edgeByCoordinates> &fixedEdges() { return lastLayout().fixedEdges; }
 
 } // namespace
 

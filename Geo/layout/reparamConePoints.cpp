@@ -12,30 +12,25 @@
 #include "edgeByCoordinates.h"
 #include "discreteVertex.h"
 #include "reparamConePoints.h"
+#include "reparamState.h"
 
 namespace reparam {
-
-namespace {
-
-  std::set<edgeByCoordinates> mergedCreases;
-  double layoutSize = 0.;
-
-} // namespace
 
 void reparamRecordMergedCreases(const std::vector<std::array<SPoint3, 2> > &edges,
                                 double size)
 {
+  std::set<edgeByCoordinates> &mergedCreases = lastLayout().mergedCreases;
   mergedCreases.clear();
   for(const auto &e : edges) mergedCreases.insert(byCoordinates(e[0], e[1]));
-  layoutSize = size;
+  lastLayout().noiseSize = size;
 }
 
 bool reparamIsMergedCrease(const SPoint3 &a, const SPoint3 &b)
 {
-  return mergedCreases.count(byCoordinates(a, b)) > 0;
+  return lastLayout().mergedCreases.count(byCoordinates(a, b)) > 0;
 }
 
-double reparamLayoutNoiseSize() { return layoutSize; }
+double reparamLayoutNoiseSize() { return lastLayout().noiseSize; }
 
 int reparamEmbedConePoints(GFace *gf, const std::vector<MVertex *> &nodes,
                            const std::vector<SPoint3> &points,
@@ -48,9 +43,11 @@ int reparamEmbedConePoints(GFace *gf, const std::vector<MVertex *> &nodes,
   // a bump of a smooth surface sums to nearly 2 pi, a cube's corner (on
   // curves anyway) to 3 pi / 2
   std::vector<int> tips = conePoints(points, triangles, M_PI);
+  const std::set<edgeByCoordinates> &mergedCreases = lastLayout().mergedCreases;
+  const double layoutSize = lastLayout().noiseSize;
   std::vector<int> corners;
   if(!mergedCreases.empty())
-    corners = creaseCorners(points, triangles, [&points](int a, int b) {
+    corners = creaseCorners(points, triangles, [&](int a, int b) {
       return mergedCreases.count(byCoordinates(points[a], points[b])) > 0;
     });
   tips.insert(tips.end(), corners.begin(), corners.end());

@@ -1,7 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <array>
-#include <map>
+#include <mutex>
 #include <set>
 #include <string>
 #include "BackgroundMeshTools.h"
@@ -18,23 +18,19 @@
 #include "reparamConePoints.h"
 #include "reparamCurveMesh.h"
 #include "reparamCreaseCurves.h"
+#include "reparamState.h"
 
 namespace reparam {
 
 namespace {
 
-  // The crease curves made, by model
-  std::map<const GModel *, std::set<const GEdge *> > &creaseCurves()
+  // gf's crease curves taken out of it (for its quadrangles, or their
+  // size) join those already out
+  void recordHidden(GFace *gf, const std::vector<GEdge *> &hidden)
   {
-    static std::map<const GModel *, std::set<const GEdge *> > curves;
-    return curves;
-  }
-
-  // The crease curves taken out of a face being recombined
-  std::map<GFace *, std::vector<GEdge *> > &hiddenCurves()
-  {
-    static std::map<GFace *, std::vector<GEdge *> > curves;
-    return curves;
+    std::unique_lock<std::mutex> lock = lockRecords();
+    std::vector<GEdge *> &out = faceRecordOf(gf).hiddenCreases;
+    out.insert(out.end(), hidden.begin(), hidden.end());
   }
 
   // The model point at p embedded in gf (a tip kept before), else a new
@@ -84,7 +80,8 @@ namespace {
       return false;
     }
     gf->addEmbeddedEdge(curve);
-    creaseCurves()[m].insert(curve);
+    std::unique_lock<std::mutex> lock = lockRecords();
+    modelRecordOf(m).creaseCurves.insert(curve);
     return true;
   }
 
@@ -112,13 +109,6 @@ namespace {
         others.push_back(line);
     }
     return creaseTooSmallForMesh(crease, others, size);
-  }
-
-  // The crease curves taken out of their faces for their size, by model
-  std::map<const GModel *, std::set<GEdge *> > &smallCreases()
-  {
-    static std::map<const GModel *, std::set<GEdge *> > curves;
-    return curves;
   }
 
   // Whether gv is embedded in a face of m or ends a curve still in use
@@ -166,21 +156,24 @@ int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
 
 int reparamHideSmallCreaseCurves(GModel *m)
 {
-  auto found = creaseCurves().find(m);
-  if(found == creaseCurves().end()) return 0;
-  std::set<GEdge *> &small = smallCreases()[m];
+  std::unique_lock<std::mutex> lock = lockRecords();
+  modelRecord *record = findModelRecord(m);
+  lock.unlock();
+  if(!record) return 0;
+  // (main thread: Mesh1D starts)
+  const std::set<const GEdge *> &creases = record->creaseCurves;
+  std::set<GEdge *> &small = record->smallCreases;
   std::set<int> faces;
   for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
     GFace *gf = *it;
     std::vector<GEdge *> &embedded = gf->embeddedEdges();
     std::vector<GEdge *> kept, hidden;
     for(GEdge *ge : embedded)
-      (found->second.count(ge) && tooSmallForTheMesh(gf, ge) ? hidden : kept)
+      (creases.count(ge) && tooSmallForTheMesh(gf, ge) ? hidden : kept)
         .push_back(ge);
     if(hidden.empty()) continue;
     embedded.swap(kept);
-    std::vector<GEdge *> &out = hiddenCurves()[gf];
-    out.insert(out.end(), hidden.begin(), hidden.end());
+    recordHidden(gf, hidden);
     small.insert(hidden.begin(), hidden.end());
     faces.insert(gf->tag());
   }
@@ -196,9 +189,11 @@ int reparamHideSmallCreaseCurves(GModel *m)
 
 void reparamDeleteHiddenCreaseMeshes(GModel *m)
 {
-  auto found = smallCreases().find(m);
-  if(found == smallCreases().end()) return;
-  for(GEdge *ge : found->second) {
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const modelRecord *record = findModelRecord(m);
+  lock.unlock();
+  if(!record) return;
+  for(GEdge *ge : record->smallCreases) {
     ge->deleteMesh();
     for(GVertex *gv : {ge->getBeginVertex(), ge->getEndVertex()})
       if(gv && !pointInUse(m, gv)) gv->deleteMesh();
@@ -207,24 +202,27 @@ void reparamDeleteHiddenCreaseMeshes(GModel *m)
 
 bool reparamCreaseCurveHidden(const GEdge *ge)
 {
-  auto found = smallCreases().find(ge->model());
-  return found != smallCreases().end() &&
-         found->second.count(const_cast<GEdge *>(ge));
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const modelRecord *record = findModelRecord(ge->model());
+  return record && record->smallCreases.count(const_cast<GEdge *>(ge));
 }
 
 void reparamHideCreaseCurvesFromQuads(GFace *gf)
 {
   if(!CTX::instance()->mesh.recombineAll && !gf->meshAttributes.recombine)
     return;
-  const std::set<const GEdge *> &creases = creaseCurves()[gf->model()];
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const std::set<const GEdge *> &creases =
+    modelRecordOf(gf->model()).creaseCurves;
+  lock.unlock();
+  // (faces recombined are meshed on one thread)
   std::vector<GEdge *> &embedded = gf->embeddedEdges();
   std::vector<GEdge *> kept, hidden;
   for(GEdge *ge : embedded) (creases.count(ge) ? hidden : kept).push_back(ge);
   if(hidden.empty()) return;
   embedded.swap(kept);
   for(GEdge *ge : hidden) ge->deleteMesh();
-  std::vector<GEdge *> &out = hiddenCurves()[gf];
-  out.insert(out.end(), hidden.begin(), hidden.end());
+  recordHidden(gf, hidden);
   Msg::Info("Reparam: surface %d: %lu crease curve%s not kept, for its "
             "quadrangles",
             gf->tag(), hidden.size(), hidden.size() > 1 ? "s" : "");
@@ -232,14 +230,17 @@ void reparamHideCreaseCurvesFromQuads(GFace *gf)
 
 void reparamRestoreCreaseCurves(GFace *gf)
 {
-  auto it = hiddenCurves().find(gf);
-  if(it == hiddenCurves().end()) return;
-  auto small = smallCreases().find(gf->model());
-  for(GEdge *ge : it->second) {
+  // faces on other threads restore theirs (the model's small creases)
+  std::unique_lock<std::mutex> lock = lockRecords();
+  faceRecord *record = findFaceRecord(gf);
+  if(!record) return;
+  std::vector<GEdge *> hidden;
+  hidden.swap(record->hiddenCreases);
+  modelRecord *model = findModelRecord(gf->model());
+  for(GEdge *ge : hidden) {
     gf->addEmbeddedEdge(ge);
-    if(small != smallCreases().end()) small->second.erase(ge);
+    if(model) model->smallCreases.erase(ge);
   }
-  hiddenCurves().erase(it);
 }
 } // namespace reparam
 

@@ -8,7 +8,6 @@
 // classification builds exactly these patches as discrete surfaces.
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
 #include <set>
@@ -29,6 +28,7 @@
 #include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
+#include "reparamState.h"
 #include "triangleAdjacency.h"
 
 namespace reparam {
@@ -177,9 +177,6 @@ namespace {
       }
   }
 
-  // Parts failsBeforeTheMap refused in the current layout (its threads)
-  std::atomic<std::size_t> refusedBeforeTheMap(0);
-
   // The tests a part fails whatever its map, before the map (a solve of
   // seconds on a part of 100k triangles, on a scan of a million only to
   // cut it: 40 s of the layout of a vessel's 964k triangles)
@@ -209,7 +206,7 @@ namespace {
     else
       return false;
     check.ok = false;
-    refusedBeforeTheMap++;
+    lastLayout().refusedBeforeTheMap++;
     return true;
   }
 
@@ -278,11 +275,10 @@ namespace {
   // only where the edges of one pair of faces branch, so two curves could
   // pass through such a node without a model point there, and their meshes
   // would not meet: Gmsh's classification asks reparamBreakCurveAt
-  std::set<const MVertex *> junctions;
-
   void recordJunctions(const modelTriangulation &model,
                        const layoutResult &layout)
   {
+    std::set<const MVertex *> &junctions = lastLayout().junctions;
     junctions.clear();
     std::vector<int> degree(model.nodes.size(), 0);
     for(const auto &e : layout.cutEdges) {
@@ -314,18 +310,22 @@ namespace {
 
 using namespace reparam;
 
-bool reparamBreakCurveAt(MVertex *v) { return junctions.count(v) > 0; }
+bool reparamBreakCurveAt(MVertex *v)
+{
+  return lastLayout().junctions.count(v) > 0;
+}
 
 namespace reparam {
 
-void reparamForgetJunctions() { junctions.clear(); }
+void reparamForgetJunctions() { lastLayout().junctions.clear(); }
 
 } // namespace reparam
 
 int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
 {
-  junctions.clear();
-  reparamForgetLayoutMaps();
+  // what an earlier layout left (its junctions, maps, cuts and creases)
+  // and gm's crease curves go, also when Gmsh's split loop makes the patches
+  beginLayoutRecords(gm);
   const reparamOptions &options = getReparamOptions();
   if(options.parametrization == (int)compoundParametrization::gmsh ||
      !options.layout)
@@ -350,7 +350,6 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
       t[i] = model.triangles[part[i]];
     return reparamVerifyPart(t);
   };
-  refusedBeforeTheMap = 0;
   layoutResult layout = computePatchLayout(model.mesh, parameters, verify);
 
   // The cuts of the layout as lines: Gmsh's classification then grows
@@ -380,7 +379,7 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     parameters.threads > 1 ?
       (" on " + std::to_string(parameters.threads) + " threads").c_str() :
       "",
-    refusedBeforeTheMap.load(), TimeOfDay() - t0);
+    lastLayout().refusedBeforeTheMap.load(), TimeOfDay() - t0);
   for(const auto &u : layout.unverified)
     // CreateGeometry then keeps its input triangles, with a warning naming
     // the surface

@@ -1,7 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <cmath>
-#include <map>
 #include <mutex>
 #include <set>
 #include <unordered_map>
@@ -19,17 +18,12 @@
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
+#include "reparamState.h"
 #include "reparamSurfaceMesh.h"
 
 namespace reparam {
 
 namespace {
-
-  // A face's input triangles (no quadrangles), and what it keeps of them
-  struct inputTriangulation : surfaceMesh {
-    std::vector<int> labels; // the curve or corner of each point
-    std::size_t leftOut = 0; // triangles with invalid coordinates
-  };
 
   // A curve's or a corner's label for boundaryStitch (0: the face)
   int label(const GEntity *ge)
@@ -51,36 +45,6 @@ namespace {
         if(gv) labels.push_back(label(gv));
     }
     return labels;
-  }
-
-  // Faces whose CreateGeometry failed, with their input triangles (the
-  // triangles themselves are deleted when the face is meshed)
-  std::map<const GFace *, inputTriangulation> &keptFaces()
-  {
-    static std::map<const GFace *, inputTriangulation> faces;
-    return faces;
-  }
-
-  // keptFaces and inputMeshedFaces: faces are meshed in parallel (OpenMP
-  // builds), and a face's fallback to its input (reparamMeshFaceWithItsInput)
-  // records it while another face's optimization asks keptAsInput
-  std::mutex &facesMutex()
-  {
-    static std::mutex m;
-    return m;
-  }
-
-  // Faces whose planar mesh gave way to their input triangles after
-  // meshing (reparamMeshFaceWithItsInput), with the mesh that made: kept
-  // as input while that mesh is theirs
-  struct meshIdentity {
-    std::size_t elements = 0;
-    const MElement *first = nullptr;
-  };
-  std::map<const GFace *, meshIdentity> &inputMeshedFaces()
-  {
-    static std::map<const GFace *, meshIdentity> faces;
-    return faces;
   }
 
   bool isFinite(const SPoint3 &p)
@@ -231,22 +195,20 @@ bool reparamTakesPoorInput(GFace *gf, double minGamma)
   return true;
 }
 
-void reparamBeginFaceGeometry(GFace *gf)
-{
-  std::lock_guard<std::mutex> lock(facesMutex());
-  keptFaces().erase(gf);
-}
+void reparamBeginFaceGeometry(GFace *gf) { beginFaceRecord(gf); }
 
 bool reparamKeepInputMesh(GFace *gf)
 {
-  const std::string reason = reparamLastFailure();
+  const std::string reason = reparamLastFailure(gf);
   if(getReparamOptions().parametrization ==
        (int)compoundParametrization::gmsh ||
      gf->triangles.empty())
     return false;
   inputTriangulation copy = copyOfTriangles(gf);
-  std::unique_lock<std::mutex> lock(facesMutex());
-  const inputTriangulation &input = keptFaces()[gf] = std::move(copy);
+  std::unique_lock<std::mutex> lock = lockRecords();
+  // (a record stays where it is while others come and go)
+  const inputTriangulation &input =
+    *(faceRecordOf(gf).keptInput = std::move(copy));
   lock.unlock();
   std::string leftOut;
   if(input.leftOut)
@@ -263,13 +225,19 @@ namespace reparam {
 
 bool keptAsInput(const GFace *gf)
 {
-  std::lock_guard<std::mutex> lock(facesMutex());
-  if(keptFaces().count(gf)) return true;
-  auto it = inputMeshedFaces().find(gf);
-  if(it == inputMeshedFaces().end()) return false;
+  // faces are meshed in parallel (OpenMP builds), and a face's fallback to
+  // its input (reparamMeshFaceWithItsInput) records it while another
+  // face's optimization asks
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const faceRecord *r = findFaceRecord(gf);
+  if(!r) return false;
+  if(r->keptInput) return true;
+  if(!r->meshedWithInput) return false;
+  // kept as input while the mesh made of it is gf's
   GFace *f = const_cast<GFace *>(gf);
-  return f->getNumMeshElements() == it->second.elements &&
-         f->getNumMeshElements() && f->getMeshElement(0) == it->second.first;
+  return f->getNumMeshElements() == r->meshedWithInput->elements &&
+         f->getNumMeshElements() &&
+         f->getMeshElement(0) == r->meshedWithInput->first;
 }
 
 bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
@@ -293,8 +261,9 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
   if(countInverted(input, candidate) > against) return false;
   meshWithStitched(gf, input, stitched, boundary);
   {
-    std::lock_guard<std::mutex> lock(facesMutex());
-    inputMeshedFaces()[gf] = {gf->getNumMeshElements(), gf->getMeshElement(0)};
+    std::unique_lock<std::mutex> lock = lockRecords();
+    faceRecordOf(gf).meshedWithInput =
+      meshIdentity{gf->getNumMeshElements(), gf->getMeshElement(0)};
   }
   Msg::Warning("Reparam: surface %d meshed with its %lu input triangles, "
                "stitched to its curves: %s",
@@ -316,11 +285,11 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against)
 
 bool reparamMeshFromInput(GFace *gf)
 {
-  std::unique_lock<std::mutex> lock(facesMutex());
-  auto it = keptFaces().find(gf);
-  if(it == keptFaces().end() || gf->haveParametrization()) return false;
-  // (a map's element stays where it is while others come and go)
-  const inputTriangulation &input = it->second;
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const faceRecord *r = findFaceRecord(gf);
+  if(!r || !r->keptInput || gf->haveParametrization()) return false;
+  // (a record stays where it is while others come and go)
+  const inputTriangulation &input = *r->keptInput;
   lock.unlock();
   std::vector<MVertex *> boundary;
   const stitchedTriangulation stitched = stitchToCurves(gf, input, boundary);

@@ -17,7 +17,6 @@
 #include "GModelParametrize.h"
 #include "GmshMessage.h"
 #include "OS.h"
-#include "mapCache.h"
 #include "parametrize.h"
 #include "reparamConePoints.h"
 #include "reparamCreaseCurves.h"
@@ -27,6 +26,7 @@
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 #include "reparamTrianglePatch.h"
 
 namespace reparam {
@@ -44,22 +44,11 @@ namespace {
             // CreateGeometry
   };
 
-  // Why the last parametrization of this thread failed, for the safety
-  // net's warning (the face's CreateGeometry fails right after it)
-  thread_local std::string lastFailure;
-
-  // The maps the patch layout computed while verifying its parts, for
-  // CreateGeometry, which parametrizes the same parts again (a 1.4M-triangle
-  // scan: a tenth of its run, bench/README.md)
-  mapCache &layoutMaps()
-  {
-    static mapCache cache;
-    return cache;
-  }
-
   struct mapRequest {
     mapCaller caller = mapCaller::gmsh;
     GFace *face = nullptr; // with mapCaller::face
+    // why the map failed: the layout's reason, the safety net's warning
+    std::string failure;
     bool quiet() const { return caller == mapCaller::layout; }
   };
 
@@ -70,17 +59,17 @@ namespace {
     return message;
   }
 
-  void failure(const mapRequest &r, const char *format, ...)
+  void failure(mapRequest &r, const char *format, ...)
   {
     va_list args;
     va_start(args, format);
-    lastFailure = formatted(format, args);
+    r.failure = formatted(format, args);
     va_end(args);
     if(r.quiet()) return;
     if(r.caller == mapCaller::gmsh)
-      Msg::Error("%s", lastFailure.c_str());
+      Msg::Error("%s", r.failure.c_str());
     else
-      Msg::Info("Reparam: %s", lastFailure.c_str());
+      Msg::Info("Reparam: %s", r.failure.c_str());
   }
 
   // "surface 12" from the nodes' classification (the hook only gets the
@@ -115,7 +104,7 @@ namespace {
   }
 
   // The patch's failure, with Gmsh's tag and place of the node at fault
-  void invalidPatch(const mapRequest &r, const trianglePatch &p)
+  void invalidPatch(mapRequest &r, const trianglePatch &p)
   {
     std::string where;
     MVertex *v = p.error.node >= 0 ? nodeOfPatch(p, p.error.node) : nullptr;
@@ -127,7 +116,7 @@ namespace {
     }
     failure(r, "Cannot parametrize triangulation (%lu triangles)%s: %s",
             p.triangles.size(), where.c_str(), p.error.what().c_str());
-    lastFailure = p.error.what(); // the layout names the part itself
+    r.failure = p.error.what(); // the layout names the part itself
   }
 
   // The warnings of the hole filling (before the maps' lines)
@@ -145,7 +134,7 @@ namespace {
 
   // The maps' lines, then what the result means for the planar mesher;
   // false if it may not be meshed
-  bool logMaps(const mapRequest &r, const parametrization &m, int choice,
+  bool logMaps(mapRequest &r, const parametrization &m, int choice,
                const std::string &surface)
   {
     const std::vector<mapAttempt> &attempts = m.result.attempts;
@@ -251,15 +240,14 @@ namespace {
   }
 
   // The map of `triangles` as `r` asks for it: 1 done (outputs written,
-  // `record` filled), -1 failed (outputs empty; why in lastFailure and the
+  // `record` filled), -1 failed (outputs empty; why in r.failure and the
   // log), 0 with Gmsh's own map. `result` gets parametrize's result.
-  int mapTriangles(const mapRequest &r,
-                   const std::vector<MTriangle *> &triangles,
+  int mapTriangles(mapRequest &r, const std::vector<MTriangle *> &triangles,
                    std::vector<MVertex *> &nodes, std::vector<SPoint2> &uv,
                    std::vector<SPoint3> &xyz, std::vector<int> &tri,
                    parametrizationRecord &record, parametrization &result)
   {
-    lastFailure.clear();
+    r.failure.clear();
     const reparamOptions &options = getReparamOptions();
     if(options.parametrization == (int)compoundParametrization::gmsh) return 0;
     uv.clear();
@@ -286,7 +274,10 @@ namespace {
     o.map = options.parametrization;
     o.fillHoles = options.fillHoles;
     o.repair = options.repair;
-    o.cache = &layoutMaps();
+    // the maps the layout verified its parts with: CreateGeometry
+    // parametrizes the same parts again (a 1.4M-triangle scan: a tenth of
+    // its run, bench/README.md)
+    o.cache = &lastLayout().maps;
     o.keepInCache = r.caller == mapCaller::layout;
     result = parametrize(p.patch, o);
     if(!r.quiet()) logHoles(result, triangles.size());
@@ -300,7 +291,7 @@ namespace {
 
 } // namespace
 
-void reparamForgetLayoutMaps() { layoutMaps().clear(); }
+void reparamForgetLayoutMaps() { lastLayout().maps.clear(); }
 
 int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<SPoint2> &uv,
@@ -337,11 +328,16 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
     done = -1;
   }
   else if(done <= 0)
-    why = lastFailure;
+    why = r.failure;
   return done;
 }
 
-std::string reparamLastFailure() { return lastFailure; }
+std::string reparamLastFailure(const GFace *gf)
+{
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const faceRecord *r = findFaceRecord(gf);
+  return r ? r->failure : std::string();
+}
 
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
 {
@@ -368,15 +364,19 @@ int reparamComputeFaceParametrization(GFace *gf,
   // the curves are made once faces get their geometry: the layout's
   // junctions are of no more use (and their nodes may go)
   reparamForgetJunctions();
-  // whatever happens below, an earlier record for these arrays is stale
-  recordParametrization(stl_vertices_uv, nullptr);
+  // whatever happens below, an earlier record of gf is stale
+  recordParametrization(gf, nullptr);
   parametrizationRecord record;
   parametrization result;
   const int done = mapTriangles(r, triangles, nodes, stl_vertices_uv,
                                 stl_vertices_xyz, stl_triangles, record,
                                 result);
+  {
+    std::unique_lock<std::mutex> lock = lockRecords();
+    faceRecordOf(gf).failure = r.failure;
+  }
   if(done <= 0) return done;
-  recordParametrization(stl_vertices_uv, &record);
+  recordParametrization(gf, &record);
   // the face's tips become mesh nodes (points embedded in it), and its
   // sharp creases left inside it embedded curves
   reparamEmbedConePoints(gf, nodes, stl_vertices_xyz, stl_triangles);
@@ -390,15 +390,13 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
                                   std::vector<SPoint3> &stl_vertices_xyz,
                                   std::vector<int> &stl_triangles)
 {
-  recordParametrization(stl_vertices_uv, nullptr);
+  // triangles of no face: no record (a face's own map is recorded by
+  // reparamComputeFaceParametrization)
   mapRequest r; // mapCaller::gmsh
   parametrizationRecord record;
   parametrization result;
-  const int done = mapTriangles(r, triangles, nodes, stl_vertices_uv,
-                                stl_vertices_xyz, stl_triangles, record,
-                                result);
-  if(done > 0) recordParametrization(stl_vertices_uv, &record);
-  return done;
+  return mapTriangles(r, triangles, nodes, stl_vertices_uv, stl_vertices_xyz,
+                      stl_triangles, record, result);
 }
 
 int reparamCheckParametrizable(const std::vector<MTriangle *> &triangles,

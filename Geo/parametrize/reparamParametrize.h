@@ -11,12 +11,13 @@
 #include "SPoint2.h"
 #include "SPoint3.h"
 
+class GFace;
 class MTriangle;
 
 namespace reparam {
 
-// Drops the maps the patch layout kept for CreateGeometry (at the start of
-// a new layout)
+// Drops the maps the patch layout kept for CreateGeometry (a new layout
+// starts without them)
 void reparamForgetLayoutMaps();
 
 // The parametrization CreateGeometry would compute for these triangles,
@@ -36,8 +37,8 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
 // reparamTryParametrization fails for that reason, whatever its maps give
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles);
 
-// Why the last parametrization failed (for the safety net's warning)
-std::string reparamLastFailure();
+// Why gf's last parametrization failed (for the safety net's warning)
+std::string reparamLastFailure(const GFace *gf);
 
 } // namespace reparam
 

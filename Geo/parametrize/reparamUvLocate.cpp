@@ -93,7 +93,9 @@ MElement *reparamFindUvTriangle(const reparamUvLocator *locator,
 {
   if(!locator) return octree ? octree->find(u, v, 0.0, -1, true) : nullptr;
   // the triangle found last, per thread (faces are meshed in parallel),
-  // tried first: a mesher's next query is often in it
+  // tried first: a mesher's next query is often in it (a search hint of
+  // this thread's mesher, not a face's record: stays here, not in
+  // Geo/core/reparamState.h)
   thread_local const reparamUvLocator *lastLocator = nullptr;
   thread_local int last = -1;
   const int t = locator->tree.find(u, v, lastLocator == locator ? last : -1);
@@ -108,7 +110,8 @@ namespace {
 
   // The boundary triangles of the last triangulation asked about (a face is
   // meshed at once, so the cache hits); one per thread, as faces may be
-  // meshed in parallel
+  // meshed in parallel (a cache of this thread's searches: stays here, not
+  // in Geo/core/reparamState.h)
   struct boundaryCache {
     const MTriangle *data = nullptr;
     std::size_t size = 0;

@@ -2,22 +2,17 @@
 
 #include <algorithm>
 #include <mutex>
-#include <set>
 #include "GFace.h"
 #include "GmshMessage.h"
 #include "reparamBamg.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamHooks.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 
 namespace reparam {
 
 namespace {
-
-  // the faces BAMG gave up on, until their mesh is replaced (BAMG's faces
-  // are meshed on one thread; the lock for a model meshed again)
-  std::mutex failedLock;
-  std::set<const GFace *> failed;
 
   bool parametrizedByReparam(const GFace *gf)
   {
@@ -53,8 +48,9 @@ bool reparamBamgFailed(GFace *gf)
   else
     Msg::Info("Reparam: surface %d: BAMG failed, meshed by Delaunay instead",
               gf->tag());
-  std::lock_guard<std::mutex> lock(failedLock);
-  failed.insert(gf);
+  // kept until its mesh is replaced (takeBamgFailure)
+  std::unique_lock<std::mutex> lock = lockRecords();
+  faceRecordOf(gf).bamgFailed = true;
   return true;
 }
 
@@ -62,8 +58,11 @@ namespace reparam {
 
 bool takeBamgFailure(const GFace *gf)
 {
-  std::lock_guard<std::mutex> lock(failedLock);
-  return failed.erase(gf) > 0;
+  std::unique_lock<std::mutex> lock = lockRecords();
+  faceRecord *r = findFaceRecord(gf);
+  if(!r || !r->bamgFailed) return false;
+  r->bamgFailed = false;
+  return true;
 }
 } // namespace reparam
 

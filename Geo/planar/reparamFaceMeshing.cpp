@@ -8,13 +8,13 @@
 // the face's parametrization (hook in recombineIntoQuads, patches/0015), and
 // whether curves and surfaces may be meshed in parallel (patches/0018).
 
-#include <shared_mutex>
 #include "reparamCreaseCurves.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
+#include "reparamState.h"
 #include "Context.h"
 #include "GFace.h"
 #include "GModel.h"
@@ -24,25 +24,6 @@
 namespace reparam {
 
 namespace {
-
-  // Faces read their curves' meshes while they are meshed, on several
-  // threads with General.NumThreads > 1; Gmsh splits the segments of
-  // curves a face's mesh cannot recover (meshGFace.cpp, patches/0020) and
-  // has the faces on them meshed again: the split waits until no other face
-  // is being meshed (the shared lock of a face is held from
-  // reparamBeginFaceMeshing to reparamEndFaceMeshing, depth: its nesting on
-  // this thread)
-  std::shared_mutex &curvesMutex()
-  {
-    static std::shared_mutex m;
-    return m;
-  }
-  thread_local int readingCurves = 0;
-  thread_local bool splitting = false;
-
-  // Mesh.CrossFieldClosestPoint while a face of Reparam's is meshed with
-  // Frontal-Delaunay for quads (-1: not changed)
-  int savedClosestPoint = -1;
 
   // The directions of a face's quadrangles: Gmsh's default takes them from
   // the closest point of the face's boundary, in the (u, v) plane, and the
@@ -57,7 +38,9 @@ namespace {
        !reparamRecombineWithParametrization(gf) ||
        !CTX::instance()->mesh.crossFieldClosestPoint)
       return;
-    savedClosestPoint = CTX::instance()->mesh.crossFieldClosestPoint;
+    // the user's, restored once the face is meshed
+    savedGmshOptions().crossFieldClosestPoint =
+      CTX::instance()->mesh.crossFieldClosestPoint;
     CTX::instance()->mesh.crossFieldClosestPoint = 0;
     Msg::Debug("Reparam: surface %d: smooth cross field for its quadrangles",
                gf->tag());
@@ -65,6 +48,7 @@ namespace {
 
   void restoreCrossField()
   {
+    int &savedClosestPoint = savedGmshOptions().crossFieldClosestPoint;
     if(savedClosestPoint < 0) return;
     CTX::instance()->mesh.crossFieldClosestPoint = savedClosestPoint;
     savedClosestPoint = -1;
@@ -76,9 +60,16 @@ namespace {
 
 using namespace reparam;
 
+// Faces read their curves' meshes while they are meshed, on several threads
+// with General.NumThreads > 1; Gmsh splits the segments of curves a face's
+// mesh cannot recover (meshGFace.cpp, patches/0020) and has the faces on
+// them meshed again: the split waits until no other face is being meshed
+// (the shared curvesLock of a face is held from reparamBeginFaceMeshing to
+// reparamEndFaceMeshing, faceMeshingContext::meshing: its nesting on this
+// thread)
 void reparamBeginFaceMeshing(GFace *gf)
 {
-  if(!readingCurves++) curvesMutex().lock_shared();
+  if(!thisThreadsFaceMeshing().meshing++) curvesLock().lock_shared();
   reparamHideCreaseCurvesFromQuads(gf);
   reparamBeginSizeGrading(gf);
   useSmoothCrossField(gf);
@@ -91,23 +82,26 @@ void reparamEndFaceMeshing(GFace *gf)
   restoreCrossField();
   reparamEndSizeGrading(gf);
   reparamRestoreCreaseCurves(gf);
-  if(readingCurves > 0 && !--readingCurves) curvesMutex().unlock_shared();
+  int &meshing = thisThreadsFaceMeshing().meshing;
+  if(meshing > 0 && !--meshing) curvesLock().unlock_shared();
 }
 
 void reparamBeginCurveSplit()
 {
-  if(splitting) return;
-  if(readingCurves) curvesMutex().unlock_shared();
-  curvesMutex().lock();
-  splitting = true;
+  faceMeshingContext &context = thisThreadsFaceMeshing();
+  if(context.splittingCurves) return;
+  if(context.meshing) curvesLock().unlock_shared();
+  curvesLock().lock();
+  context.splittingCurves = true;
 }
 
 void reparamEndCurveSplit()
 {
-  if(!splitting) return;
-  splitting = false;
-  curvesMutex().unlock();
-  if(readingCurves) curvesMutex().lock_shared();
+  faceMeshingContext &context = thisThreadsFaceMeshing();
+  if(!context.splittingCurves) return;
+  context.splittingCurves = false;
+  curvesLock().unlock();
+  if(context.meshing) curvesLock().lock_shared();
 }
 
 bool reparamRecombineWithParametrization(GFace *gf)

@@ -14,13 +14,12 @@
 #include "reparamMeshValidity.h"
 #include "reparamMesherFallback.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 #include "reparamSurfaceMesh.h"
 
 namespace reparam {
 
 namespace {
-
-  thread_local bool trying = false;
 
   // A face's mesh taken out of it (Gmsh's mesher deletes what the face
   // holds)
@@ -87,7 +86,10 @@ std::string meshDefectsText(const meshDefects &d, const char *element)
   return text;
 }
 
-bool reparamTryingOtherMesher() { return trying; }
+bool reparamTryingOtherMesher()
+{
+  return thisThreadsFaceMeshing().tryingOtherMesher;
+}
 
 std::size_t countTrianglesAgainstInput(GFace *gf)
 {
@@ -106,6 +108,7 @@ bool reparamTryOtherMesher(GFace *gf, const meshDefects &current, int algorithm)
     other = gf->getMeshingAlgo() == ALGO_2D_DELAUNAY ? ALGO_2D_FRONTAL :
                                                        ALGO_2D_DELAUNAY;
   detachedMesh kept = detach(gf);
+  bool &trying = thisThreadsFaceMeshing().tryingOtherMesher;
   trying = true;
   gf->setMeshingAlgo(other);
   // Gmsh's meshers read the global algorithm too: under BAMG's, Delaunay's

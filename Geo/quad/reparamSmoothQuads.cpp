@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <string>
 #include "BackgroundMeshTools.h"
@@ -35,6 +36,7 @@
 #include "reparamReport.h"
 #include "reparamResplitAgainst.h"
 #include "reparamSmoothQuads.h"
+#include "reparamState.h"
 
 namespace reparam {
 
@@ -285,28 +287,27 @@ namespace {
     return r;
   }
 
-  // The meshes this left, per face (element count and first element): a
-  // second call (another Mesh.CompoundOptimize pass over the model) leaves
-  // them as they are
-  std::map<const GFace *, std::pair<std::size_t, const MElement *> > &
-  smoothedMeshes()
-  {
-    static std::map<const GFace *, std::pair<std::size_t, const MElement *> >
-      meshes;
-    return meshes;
-  }
-
-  std::pair<std::size_t, const MElement *> meshMark(GFace *gf)
+  meshIdentity meshMark(GFace *gf)
   {
     const std::size_t n = gf->getNumMeshElements();
-    return std::make_pair(n, n ? gf->getMeshElement(0) : nullptr);
+    return meshIdentity{n, n ? gf->getMeshElement(0) : nullptr};
+  }
+
+  // The meshes this left, per face (faceRecord::smoothedQuads): a second
+  // call (another Mesh.CompoundOptimize pass over the model) leaves them as
+  // they are
+  void markSmoothed(GFace *gf)
+  {
+    std::unique_lock<std::mutex> lock = lockRecords();
+    faceRecordOf(gf).smoothedQuads = meshMark(gf);
   }
 
   bool alreadySmoothed(const cutGroup &g)
   {
     for(GFace *gf : g.faces) {
-      auto it = smoothedMeshes().find(gf);
-      if(it == smoothedMeshes().end() || it->second != meshMark(gf))
+      std::unique_lock<std::mutex> lock = lockRecords();
+      const faceRecord *r = findFaceRecord(gf);
+      if(!r || !r->smoothedQuads || *r->smoothedQuads != meshMark(gf))
         return false;
     }
     return true;
@@ -318,7 +319,7 @@ namespace {
     gf->deleteVertexArrays();
     const faceReport *report = findFaceReport(gf);
     reparamReportMeshedFace(gf, report ? report->meshTime : 0.);
-    smoothedMeshes()[gf] = meshMark(gf);
+    markSmoothed(gf);
   }
 
   // Writes the moved points back: a face node goes to the face whose input
@@ -472,7 +473,7 @@ namespace {
     o.size = meanQuadEdgeAtPoints(m);
     const quadSmoothingResult r =
       smoothQuadsOnInput(m, movable, onInput, landing, o, &slides);
-    for(GFace *gf : g.faces) smoothedMeshes()[gf] = meshMark(gf);
+    for(GFace *gf : g.faces) markSmoothed(gf);
     if(!r.moves && !rotated.rotations && !collapsed.collapses && !splits)
       return false;
     writeSlides(m, nodes, slides, slideFrom);

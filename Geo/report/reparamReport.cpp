@@ -18,38 +18,12 @@
 #include "reparamInputMesh.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 #include "reparamSurfaceMesh.h"
 
 namespace reparam {
 
 namespace {
-
-  // Keyed by the address of the face's uv array (see recordParametrization)
-  std::map<const std::vector<SPoint2> *, parametrizationRecord> &
-  parametrizations()
-  {
-    static std::map<const std::vector<SPoint2> *, parametrizationRecord> r;
-    return r;
-  }
-
-  // Another thread's insertion or removal leaves a record found in place
-  std::mutex &parametrizationsMutex()
-  {
-    static std::mutex m;
-    return m;
-  }
-
-  std::mutex &reportsMutex()
-  {
-    static std::mutex m;
-    return m;
-  }
-
-  std::map<const GFace *, optimizationRecord> &optimizations()
-  {
-    static std::map<const GFace *, optimizationRecord> r;
-    return r;
-  }
 
   bool sameMesh(const faceReport &r, const GFace *gf)
   {
@@ -59,42 +33,27 @@ namespace {
 
 } // namespace
 
-void recordParametrization(const std::vector<SPoint2> &uv,
-                           const parametrizationRecord *record)
+void recordParametrization(const GFace *gf, const parametrizationRecord *record)
 {
-  // the layout verifies its parts on several threads, each with its own uv
-  std::lock_guard<std::mutex> lock(parametrizationsMutex());
+  std::unique_lock<std::mutex> lock = lockRecords();
   if(record)
-    parametrizations()[&uv] = *record;
-  else
-    parametrizations().erase(&uv);
-}
-
-const parametrizationRecord *findParametrization(const std::vector<SPoint2> &uv)
-{
-  std::lock_guard<std::mutex> lock(parametrizationsMutex());
-  auto it = parametrizations().find(&uv);
-  return it == parametrizations().end() ? nullptr : &it->second;
+    faceRecordOf(gf).parametrization = *record;
+  else if(faceRecord *r = findFaceRecord(gf))
+    r->parametrization.reset();
 }
 
 const parametrizationRecord *findParametrization(const GFace *gf)
 {
-  std::lock_guard<std::mutex> lock(parametrizationsMutex());
-  auto it = parametrizations().find(&gf->stl_vertices_uv);
-  if(it == parametrizations().end()) return nullptr;
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const faceRecord *f = findFaceRecord(gf);
+  if(!f || !f->parametrization) return nullptr;
   // a face created where a deleted one was, with a parametrization read
   // from a file, is not the one recorded
-  const parametrizationRecord &r = it->second;
+  const parametrizationRecord &r = *f->parametrization;
   if(r.nodes != gf->stl_vertices_uv.size() ||
      r.triangles != gf->stl_triangles.size() / 3)
     return nullptr;
   return &r;
-}
-
-std::vector<faceReport> &pendingFaceReports()
-{
-  static std::vector<faceReport> reports;
-  return reports;
 }
 
 faceReport *findFaceReport(const GFace *gf)
@@ -113,18 +72,18 @@ faceReport *findFaceReportOfFace(const GFace *gf)
 
 void recordOptimization(const GFace *gf, const optimizationRecord &record)
 {
-  std::lock_guard<std::mutex> lock(reportsMutex());
-  optimizations()[gf] = record;
+  std::unique_lock<std::mutex> lock = lockRecords();
+  faceRecordOf(gf).optimization = record;
 }
 
 const optimizationRecord *findOptimization(const GFace *gf)
 {
-  std::lock_guard<std::mutex> lock(reportsMutex());
-  auto it = optimizations().find(gf);
-  if(it == optimizations().end()) return nullptr;
+  std::unique_lock<std::mutex> lock = lockRecords();
+  const faceRecord *found = findFaceRecord(gf);
+  if(!found || !found->optimization) return nullptr;
   // kept until the face is meshed again: the mesh it left must be there
   GFace *f = const_cast<GFace *>(gf);
-  const optimizationRecord &r = it->second;
+  const optimizationRecord &r = *found->optimization;
   if(!r.elements || f->getNumMeshElements() != r.elements ||
      f->getMeshElement(0) != r.firstElement)
     return nullptr;
@@ -134,9 +93,9 @@ const optimizationRecord *findOptimization(const GFace *gf)
 bool takeOptimizationCount(const GFace *gf, std::size_t &inverted)
 {
   const optimizationRecord *found = findOptimization(gf);
-  std::lock_guard<std::mutex> lock(reportsMutex());
+  std::unique_lock<std::mutex> lock = lockRecords();
   if(!found || found->countTaken || !gf->quadrangles.empty()) return false;
-  optimizationRecord &r = optimizations()[gf];
+  optimizationRecord &r = *faceRecordOf(gf).optimization;
   r.countTaken = true;
   inverted = r.reversed ? r.elements - r.againstAfter : r.againstAfter;
   return true;
@@ -144,8 +103,8 @@ bool takeOptimizationCount(const GFace *gf, std::size_t &inverted)
 
 void forgetOptimization(const GFace *gf)
 {
-  std::lock_guard<std::mutex> lock(reportsMutex());
-  optimizations().erase(gf);
+  std::unique_lock<std::mutex> lock = lockRecords();
+  if(faceRecord *r = findFaceRecord(gf)) r->optimization.reset();
 }
 
 } // namespace reparam
@@ -195,7 +154,7 @@ void reparamReportMeshedFace(GFace *gf, double seconds)
   }
   // a face meshed twice before the report: keep the last mesh; faces may be
   // meshed in parallel (OpenMP builds)
-  std::lock_guard<std::mutex> lock(reportsMutex());
+  std::unique_lock<std::mutex> lock = lockReports();
   std::vector<faceReport> &reports = pendingFaceReports();
   reports.erase(
     std::remove_if(reports.begin(), reports.end(),

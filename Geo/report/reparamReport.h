@@ -16,6 +16,7 @@
 #include "SPoint2.h"
 #include "faceQuality.h"
 #include "meshFidelity.h"
+#include "reparamFaceRecord.h"
 #include "reparamPoorTriangles.h"
 
 class GFace;
@@ -24,48 +25,13 @@ class MElement;
 
 namespace reparam {
 
-// What reparamComputeParametrization did
-struct parametrizationRecord {
-  std::vector<int> mapsTried; // Mesh.CompoundParametrization values, in turn
-  int map = -1; // the one kept
-  bool bijective = false;
-  std::size_t nodes = 0, triangles = 0, holes = 0, filledHoles = 0;
-  double patchTime = 0., fillTime = 0., assembleTime = 0., solveTime = 0.,
-         checkTime = 0.;
-  double fallbackTime = 0.; // the maps tried before the one kept
-  // the map the patch layout computed for the same part, taken as it is
-  // (its times are the layout's)
-  bool fromLayout = false;
-};
-
-// Records the parametrization written into `uv` (the stl_vertices_uv of the
-// face being created: Gmsh's hook gets the arrays, not the face); forgets
-// any earlier record for `uv` when record is null (Gmsh's own map).
-void recordParametrization(const std::vector<SPoint2> &uv,
-                           const parametrizationRecord *record);
+// Records gf's parametrization (in its face record,
+// Geo/core/reparamState.h); forgets an earlier one when record is null
+// (Gmsh's own map, or none).
+void recordParametrization(const GFace *gf, const parametrizationRecord *record);
 
 // The record of gf's current parametrization, or null
 const parametrizationRecord *findParametrization(const GFace *gf);
-// The record of the parametrization written into `uv`, or null
-const parametrizationRecord *
-findParametrization(const std::vector<SPoint2> &uv);
-
-// What Mesh.CompoundOptimize did to a face's new mesh
-struct optimizationRecord {
-  bool done = false;
-  double kappaMinBefore = 1., seconds = 0.;
-  std::size_t inserted = 0, splits = 0, collapses = 0, flips = 0, moves = 0;
-  std::size_t againstBefore = 0, againstAfter = 0;
-  bool reversed = false; // the mesh turns against the input (most of it)
-  // made by the optimization of the faces a patch was cut into, together
-  // (Geo/optimize/reparamOptimizeAcrossCuts.h)
-  bool acrossCuts = false;
-  int group = 0; // then: the tag of the first face of that group
-  bool countTaken = false; // by takeOptimizationCount
-  // the mesh it left, to tell whether it is still gf's
-  std::size_t elements = 0;
-  const MElement *firstElement = nullptr;
-};
 
 // Records the optimization of gf's new mesh, for its report and benches
 void recordOptimization(const GFace *gf, const optimizationRecord &record);
@@ -102,9 +68,6 @@ struct faceReport {
   const MElement *firstElement = nullptr;
   std::size_t elements = 0;
 };
-
-// The reports gathered since the last reparamReportMeshedModel
-std::vector<faceReport> &pendingFaceReports();
 
 // The pending report of gf if its mesh is still the one measured, else null
 faceReport *findFaceReport(const GFace *gf);

@@ -1,8 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
-#include <map>
-#include <memory>
 #include <mutex>
 #include "Context.h"
 #include "GEdge.h"
@@ -15,6 +13,7 @@
 #include "reparamHooks.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 #include "reparamSurfaceMesh.h"
 #include "surfaceMesh.h"
 
@@ -24,37 +23,18 @@ namespace {
 
   const double noSize = 1e22;
 
-  // A face's field, and what it was built for
-  struct faceField {
-    double n = 0., hMin = 0., hMax = 0., gradation = 0.;
-    std::size_t inputTriangles = 0;
-    std::unique_ptr<curvatureMetricField> field;
-  };
-
-  std::mutex &fieldsMutex()
-  {
-    static std::mutex m;
-    return m;
-  }
-
-  std::map<const GFace *, faceField> &fields()
-  {
-    static std::map<const GFace *, faceField> f;
-    return f;
-  }
-
-  // Mesh.SmoothRatio while a face is meshed by BAMG with the metric (-1: not
-  // changed): BAMG grades the metric in the (u, v) plane, where the map's
-  // conformal factor changes the sizes as much as the surface does (a tube
-  // mapped to an annulus: by e^z), so BAMG's own grading is off (a ratio
-  // below 1.1) and the metric is graded on the input instead
-  double userSmoothRatio = -1.;
-
-  // ... by this ratio, the usual one for anisotropic metrics: with Gmsh's
+  // The metric is graded on the input (reparamBeginAnisotropicMeshing) by
+  // this ratio, the usual one for anisotropic metrics: with Gmsh's
   // 1.8 (Mesh.SmoothRatio, which is BAMG's, in the plane) the long elements
   // along a vessel reach across its bends (bench/README.md, "The metric
   // field")
   const double gradation = 1.3;
+
+  curvatureFieldRecord &recordOf(const GFace *gf)
+  {
+    std::unique_lock<std::mutex> lock = lockRecords();
+    return faceRecordOf(gf).curvature;
+  }
 
   bool applies(const GFace *gf)
   {
@@ -74,8 +54,9 @@ namespace {
     sizes.hMin = CTX::instance()->mesh.lcMin;
     sizes.hMax = std::min(CTX::instance()->mesh.lcMax, CTX::instance()->lc);
     sizes.gradation = gradation;
-    std::lock_guard<std::mutex> lock(fieldsMutex());
-    faceField &f = fields()[gf];
+    // (built on the thread that asks first, not under lockRecords)
+    std::unique_lock<std::mutex> lock = lockCurvatureFields();
+    curvatureFieldRecord &f = recordOf(gf);
     const std::size_t triangles = gf->stl_triangles.size() / 3;
     if(f.field && f.n == sizes.elementsPerCircle && f.hMin == sizes.hMin &&
        f.hMax == sizes.hMax && f.gradation == sizes.gradation &&
@@ -153,8 +134,14 @@ bool reparamAnisotropicFace(const GFace *gf)
   return gf->getMeshingAlgo() == ALGO_2D_BAMG && applies(gf);
 }
 
+// Mesh.SmoothRatio while a face is meshed by BAMG with the metric (the
+// user's saved, -1: not changed): BAMG grades the metric in the (u, v)
+// plane, where the map's conformal factor changes the sizes as much as the
+// surface does (a tube mapped to an annulus: by e^z), so BAMG's own grading
+// is off (a ratio below 1.1) and the metric is graded on the input instead
 void reparamBeginAnisotropicMeshing(GFace *gf)
 {
+  double &userSmoothRatio = savedGmshOptions().smoothRatio;
   if(!reparamAnisotropicFace(gf) || userSmoothRatio >= 0.) return;
   userSmoothRatio = CTX::instance()->mesh.smoothRatio;
   CTX::instance()->mesh.smoothRatio = 1.;
@@ -162,6 +149,7 @@ void reparamBeginAnisotropicMeshing(GFace *gf)
 
 void reparamEndAnisotropicMeshing()
 {
+  double &userSmoothRatio = savedGmshOptions().smoothRatio;
   if(userSmoothRatio < 0.) return;
   CTX::instance()->mesh.smoothRatio = userSmoothRatio;
   userSmoothRatio = -1.;

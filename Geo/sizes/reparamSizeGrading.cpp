@@ -27,6 +27,7 @@
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
+#include "reparamState.h"
 #include "reparamSurfaceMesh.h"
 #include "surfaceMesh.h"
 
@@ -38,16 +39,6 @@ namespace {
   // left out: they would barely change it, and every query goes through
   // the nodes smaller than the size it finds
   const double nearlyTheSize = 0.9;
-
-  // One face at a time per thread: Gmsh meshes each face on one thread
-  struct grading {
-    GFace *face = nullptr;
-    int meshSizeFromBoundary = -1; // the face's own setting, restored
-    std::unique_ptr<gradedBoundarySize> size;
-  };
-  thread_local grading current;
-  // reparamUngradedMeshSize is asking
-  thread_local bool ungraded = false;
 
   // The nodes of gf's curves (embedded ones too) whose shortest segment is
   // shorter than the size asked there, with that length (Gmsh's size of a
@@ -87,18 +78,6 @@ namespace {
     return std::unique_ptr<gradedBoundarySize>(
       new gradedBoundarySize(small, sizes, gradient, reach));
   }
-
-  // The curves' sizes while they are meshed: read by every thread
-  struct curveGrading {
-    GModel *model = nullptr;
-    std::unique_ptr<gradedBoundarySize> size;
-    std::set<const GEdge *> alongStrips; // the curves of narrow faces
-    // the curves with a fold beside them (keepUnfolded) keep the sizes
-    // without the strips'
-    std::set<const GEdge *> folded;
-    std::unique_ptr<gradedBoundarySize> withoutStrips;
-  };
-  curveGrading curves;
 
   // A discrete curve's input polyline, its length and the size asked at
   // its middle; false for another kind of curve
@@ -295,11 +274,6 @@ namespace {
   // Mesh.MeshSizeMax of 1e22: 4e8 segments on a square's side)
   const double mostSegments = 1e7;
 
-  // The curves refused, with their meshing method, restored after Mesh1D,
-  // and the surfaces on them, restored after Mesh2D
-  std::vector<std::pair<GEdge *, int> > refusedCurves;
-  std::vector<std::pair<GFace *, int> > refusedSurfaces;
-
   // One pass over m's discrete curves: the ones whose mesh would have more
   // than mostSegments segments refused (an error each), and, with a
   // gradient, the ends of those shorter than the size asked along them,
@@ -307,7 +281,8 @@ namespace {
   std::unique_ptr<gradedBoundarySize>
   measureCurves(GModel *m, double gradient, std::set<const GEdge *> &along,
                 std::set<const GEdge *> &folded,
-                std::unique_ptr<gradedBoundarySize> &withoutStrips)
+                std::unique_ptr<gradedBoundarySize> &withoutStrips,
+                std::vector<std::pair<GEdge *, int> > &refusedCurves)
   {
     const int segments = std::max(1, CTX::instance()->mesh.minCurveNodes - 1);
     std::vector<SPoint3> ends;
@@ -361,68 +336,97 @@ void reparamBeginCurveSizeGrading(GModel *m)
   if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return;
   reparamHideSmallCreaseCurves(m);
+  std::unique_lock<std::mutex> lock = lockRecords();
+  modelRecord &record = modelRecordOf(m);
+  lock.unlock();
+  // (main thread: Mesh1D starts)
   const double gradient = getReparamOptions().meshSizeGradient;
   std::set<const GEdge *> along, folded;
   std::unique_ptr<gradedBoundarySize> withoutStrips;
-  std::unique_ptr<gradedBoundarySize> size =
-    measureCurves(m, gradient, along, folded, withoutStrips);
+  std::unique_ptr<gradedBoundarySize> size = measureCurves(
+    m, gradient, along, folded, withoutStrips, record.refusedCurves);
   if(gradient <= 0. || !size->size()) return;
   Msg::Debug("Reparam: curve sizes graded from %lu sources", size->size());
+  curveSizeGrading &curves = record.curveSizes;
   curves.size = std::move(size);
   curves.alongStrips.swap(along);
   curves.folded.swap(folded);
   curves.withoutStrips = std::move(withoutStrips);
-  curves.model = m;
 }
 
 void reparamEndCurveSizeGrading(GModel *m)
 {
   reparamDeleteHiddenCreaseMeshes(m);
-  for(const auto &r : refusedCurves) {
+  std::unique_lock<std::mutex> lock = lockRecords();
+  modelRecord *record = findModelRecord(m);
+  lock.unlock();
+  if(!record) return;
+  for(const auto &r : record->refusedCurves) {
     if(r.first->model() != m) continue;
     r.first->meshAttributes.method = r.second;
     for(GFace *gf : r.first->faces()) {
       if(gf->meshAttributes.method == MESH_NONE) continue;
       Msg::Warning("Reparam: surface %d not meshed: its curve %d is not",
                    gf->tag(), r.first->tag());
-      refusedSurfaces.push_back({gf, gf->meshAttributes.method});
+      record->refusedSurfaces.push_back({gf, gf->meshAttributes.method});
       gf->meshAttributes.method = MESH_NONE;
     }
   }
-  refusedCurves.clear();
-  if(curves.model == m) curves = curveGrading();
+  record->refusedCurves.clear();
+  record->curveSizes = curveSizeGrading();
 }
 
 namespace reparam {
 
 void reparamRestoreRefusedSurfaces(GModel *m)
 {
+  std::unique_lock<std::mutex> lock = lockRecords();
+  modelRecord *record = findModelRecord(m);
+  lock.unlock();
+  if(!record) return;
   std::vector<std::pair<GFace *, int> > others;
-  for(const auto &r : refusedSurfaces)
+  for(const auto &r : record->refusedSurfaces)
     if(r.first->model() == m)
       r.first->meshAttributes.method = r.second;
     else
       others.push_back(r);
-  refusedSurfaces.swap(others);
+  record->refusedSurfaces.swap(others);
 }
+
+namespace {
+
+  // The sizes along ge's model's curves while they are meshed, if graded
+  // and ge is a discrete curve
+  const curveSizeGrading *curveGradingOf(const GEdge *ge)
+  {
+    std::unique_lock<std::mutex> lock = lockRecords();
+    const modelRecord *record = findModelRecord(ge->model());
+    if(!record || !record->curveSizes.size ||
+       ge->geomType() != GEntity::DiscreteCurve)
+      return nullptr;
+    return &record->curveSizes;
+  }
+
+} // namespace
 
 bool reparamCurveSizesGraded(const GEdge *ge)
 {
-  return curves.model && ge->model() == curves.model &&
-         ge->geomType() == GEntity::DiscreteCurve;
+  return curveGradingOf(ge) != nullptr;
 }
 
 bool reparamCurveAlongNarrowStrip(const GEdge *ge)
 {
-  return reparamCurveSizesGraded(ge) && curves.alongStrips.count(ge);
+  const curveSizeGrading *curves = curveGradingOf(ge);
+  return curves && curves->alongStrips.count(ge);
 }
 
 double reparamGradedCurveSize(const GEdge *ge, const SPoint3 &x, double size)
 {
-  if(!reparamCurveSizesGraded(ge)) return size;
-  if(curves.withoutStrips && curves.folded.count(ge))
-    return (*curves.withoutStrips)(x, size);
-  return (*curves.size)(x, size);
+  const curveSizeGrading *curves = curveGradingOf(ge);
+  if(!curves) return size;
+  if(curves->withoutStrips && curves->folded.count(ge))
+    return (*curves->withoutStrips)(x, size);
+  return (*curves->size)(x, size);
 }
 
 void reparamBeginSizeGrading(GFace *gf)
@@ -432,6 +436,7 @@ void reparamBeginSizeGrading(GFace *gf)
   const double gradient = getReparamOptions().meshSizeGradient;
   if(!map || map->map <= 0 || gradient <= 0. || !gf->getMeshSizeFromBoundary())
     return;
+  faceSizeGrading &current = thisThreadsFaceMeshing().grading;
   current.size = boundarySizes(gf, gradient);
   current.face = gf;
   current.meshSizeFromBoundary = gf->meshAttributes.meshSizeFromBoundary;
@@ -442,9 +447,10 @@ void reparamBeginSizeGrading(GFace *gf)
 
 void reparamEndSizeGrading(GFace *gf)
 {
+  faceSizeGrading &current = thisThreadsFaceMeshing().grading;
   if(current.face != gf) return;
   gf->setMeshSizeFromBoundary(current.meshSizeFromBoundary);
-  current = grading();
+  current = faceSizeGrading();
 }
 
 } // namespace reparam
@@ -452,7 +458,9 @@ void reparamEndSizeGrading(GFace *gf)
 double reparamGradedMeshSize(GEntity *ge, double x, double y, double z,
                              double size)
 {
-  if(!current.face || ge != current.face || ungraded) return size;
+  const faceMeshingContext &context = thisThreadsFaceMeshing();
+  const faceSizeGrading &current = context.grading;
+  if(!current.face || ge != current.face || context.ungradedSize) return size;
   return (*current.size)(SPoint3(x, y, z), size);
 }
 
@@ -460,10 +468,10 @@ namespace reparam {
 
 double reparamUngradedMeshSize(GFace *gf, const SPoint3 &x)
 {
-  ungraded = true;
+  faceMeshingContext &context = thisThreadsFaceMeshing();
+  context.ungradedSize = true;
   const double size = BGM_MeshSize(gf, 0., 0., x.x(), x.y(), x.z());
-  ungraded = false;
+  context.ungradedSize = false;
   return size;
 }
 } // namespace reparam
-

@@ -14,7 +14,9 @@
 #include "gmshTestEnvironment.h"
 #include "reparamInputMesh.h"
 #include "reparamReport.h"
+#include "reparamState.h"
 #include "reparamTriangleQuality.h"
+#include "triangleQuality.h"
 
 using namespace reparam;
 
