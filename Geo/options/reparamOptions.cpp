@@ -1,6 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <cmath>
+#include <string>
 #include "GmshMessage.h"
 #include "Options.h"
 #include "reparamHooks.h"
@@ -19,22 +20,34 @@ reparamOptions &getReparamOptions()
 
 using namespace reparam;
 
+namespace reparam {
+
+// An integer option from lo to hi, shown in the options window: another value
+// is refused with an error (`what` names the value kept), the option kept
+static double integerOption(int &option, int lo, int hi, const char *name,
+                            const std::string &what, compoundWidget widget,
+                            int action, double val)
+{
+  if(action & GMSH_SET) {
+    const int value = (int)val;
+    if(value != val || value < lo || value > hi)
+      Msg::Error("%s must be an integer from %d to %d (got %g): keeping %d%s",
+                 name, lo, hi, val, option, what.c_str());
+    else
+      option = value;
+  }
+  if(action & GMSH_GUI) showInOptionsWindow(widget, option);
+  return option;
+}
+
+} // namespace reparam
+
 double opt_mesh_compound_parametrization(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) {
-    int value = (int)val;
-    if(value != val || value < 0 || value > 6)
-      Msg::Error("Mesh.CompoundParametrization must be an integer from 0 to "
-                 "6 (got %g): keeping %d (%s)",
-                 val, o.parametrization,
-                 compoundParametrizationName(o.parametrization));
-    else
-      o.parametrization = value;
-  }
-  if(action & GMSH_GUI)
-    showInOptionsWindow(compoundWidget::parametrization, o.parametrization);
-  return o.parametrization;
+  int &p = getReparamOptions().parametrization;
+  return integerOption(p, 0, 6, "Mesh.CompoundParametrization",
+                       std::string(" (") + compoundParametrizationName(p) + ")",
+                       compoundWidget::parametrization, action, val);
 }
 
 namespace reparam {
@@ -87,19 +100,9 @@ double opt_mesh_compound_curve_corners(OPT_ARGS_NUM)
 
 double opt_mesh_compound_optimize(OPT_ARGS_NUM)
 {
-  reparamOptions &o = getReparamOptions();
-  if(action & GMSH_SET) {
-    const int value = (int)val;
-    if(value != val || value < 0 || value > 2)
-      Msg::Error("Mesh.CompoundOptimize must be 0, 1 or 2 (got %g): keeping "
-                 "%d",
-                 val, o.optimize);
-    else
-      o.optimize = value;
-  }
-  if(action & GMSH_GUI)
-    showInOptionsWindow(compoundWidget::optimize, o.optimize);
-  return o.optimize;
+  return integerOption(getReparamOptions().optimize, 0, 2,
+                       "Mesh.CompoundOptimize", "", compoundWidget::optimize,
+                       action, val);
 }
 
 namespace reparam {
@@ -166,4 +169,3 @@ std::string opt_mesh_compound_report_file(OPT_ARGS_STR)
   if(action & GMSH_SET) o.reportFile = val;
   return o.reportFile;
 }
-

@@ -3,8 +3,8 @@
 // What Reparam's parametrization hook offers besides the hook itself
 // (declared in Gmsh's Geo/GModelParametrize.h by patches/0001).
 
-#ifndef REPARAM_PARAMETRIZE_H
-#define REPARAM_PARAMETRIZE_H
+#ifndef REPARAM_GEO_PARAMETRIZE_H
+#define REPARAM_GEO_PARAMETRIZE_H
 
 #include <string>
 #include <vector>
