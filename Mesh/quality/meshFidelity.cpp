@@ -84,6 +84,35 @@ namespace {
     }
   };
 
+  SVector3 elementNormal(const surfaceMesh &m, const std::array<int, 3> &t)
+  {
+    return triangleNormal(m, t);
+  }
+  SVector3 elementNormal(const surfaceMesh &m, const std::array<int, 4> &q)
+  {
+    return quadrangleNormal(m, q);
+  }
+
+  // The distances from the centroids of `elements` of `from` to `to` into
+  // `s`, the elements against `to` counted into `inverted` when given
+  template <int N>
+  void centroidDistances(const surfaceMesh &from,
+                         const std::vector<std::array<int, N> > &elements,
+                         const surfaceMesh &to,
+                         const closestTriangleSearch &search, int &last,
+                         oneSided &s, std::size_t *inverted)
+  {
+    for(const auto &e : elements) {
+      const SPoint3 g = centroid<N>(from, e);
+      closestTriangleHit hit = search.closest(g, last);
+      last = hit.triangle;
+      s.add(hit.distance, g);
+      if(inverted)
+        *inverted +=
+          pointsAgainst<N>(from, e, elementNormal(from, e), to, search, hit);
+    }
+  }
+
   // distances from the nodes and element centroids of `from` to `to`, and
   // the elements of `from` whose normal points against the closest triangle
   // of `to` (normals: of the triangles of `to`)
@@ -100,24 +129,9 @@ namespace {
       s.add(hit.distance, p);
       last = hit.triangle;
     }
-    for(const auto &t : from.triangles) {
-      const SPoint3 g = centroid<3>(from, t);
-      closestTriangleHit hit = search.closest(g, last);
-      last = hit.triangle;
-      s.add(hit.distance, g);
-      if(inverted)
-        *inverted +=
-          pointsAgainst<3>(from, t, triangleNormal(from, t), to, search, hit);
-    }
-    for(const auto &q : from.quadrangles) {
-      const SPoint3 g = centroid<4>(from, q);
-      closestTriangleHit hit = search.closest(g, last);
-      last = hit.triangle;
-      s.add(hit.distance, g);
-      if(inverted)
-        *inverted +=
-          pointsAgainst<4>(from, q, quadrangleNormal(from, q), to, search, hit);
-    }
+    centroidDistances<3>(from, from.triangles, to, search, last, s, inverted);
+    centroidDistances<4>(from, from.quadrangles, to, search, last, s,
+                         inverted);
     return s;
   }
 
