@@ -303,3 +303,22 @@ surfaceMesh quadGrid(int n)
     }
   return m;
 }
+
+// An 8 x 8 grid of the unit square whose edge ab of the cells (4, 4) and
+// (4, 3) is split by a node m at its midpoint moved by `offset`: the
+// triangle (b, a, m) degenerate (no offset) or a sliver
+testTriangulation gridWithSplitEdge(const SPoint3 &offset)
+{
+  testTriangulation t = rectangleGrid(8, 8, 1., 1.);
+  auto id = [](int i, int j) { return j * 9 + i; };
+  const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
+  const int m = (int)t.points.size();
+  t.points.push_back((t.points[a] + t.points[b]) * 0.5 + offset);
+  auto it = std::find(t.triangles.begin(), t.triangles.end(),
+                      std::array<int, 3>{{below, b, a}});
+  if(it == t.triangles.end()) return t;
+  *it = {{below, b, m}};
+  t.triangles.push_back({{below, m, a}});
+  t.triangles.push_back({{b, a, m}});
+  return t;
+}

@@ -47,6 +47,11 @@ testTriangulation liftPlanar(testTriangulation t, double amplitude);
 // nx x ny cells over [0, lx] x [0, ly] (z = 0), diagonals alternating
 testTriangulation rectangleGrid(int nx, int ny, double lx, double ly);
 
+// rectangleGrid(8, 8, 1, 1) whose edge ab of the cells (4, 4) and (4, 3) is
+// split by a node m at its midpoint moved by `offset`: the triangle (b, a, m)
+// degenerate (no offset) or a sliver
+testTriangulation gridWithSplitEdge(const SPoint3 &offset);
+
 // The unit-radius half cylinder of the given length: nAround x nAlong cells,
 // each a planar rectangle cut in two, so that the polyhedron is exactly
 // developable

@@ -48,24 +48,6 @@ namespace {
     return faces;
   }
 
-  // An 8 x 8 grid of the unit square with a zero-area triangle: the edge
-  // of the cells (4, 4) and (4, 3) split at its midpoint (no map takes it)
-  testTriangulation gridWithADegenerateTriangle()
-  {
-    testTriangulation t = rectangleGrid(8, 8, 1., 1.);
-    auto id = [](int i, int j) { return j * 9 + i; };
-    const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
-    const int m = (int)t.points.size();
-    t.points.push_back((t.points[a] + t.points[b]) * 0.5);
-    auto it = std::find(t.triangles.begin(), t.triangles.end(),
-                        std::array<int, 3>{{below, b, a}});
-    if(it == t.triangles.end()) return t;
-    *it = {{below, b, m}};
-    t.triangles.push_back({{below, m, a}});
-    t.triangles.push_back({{b, a, m}});
-    return t;
-  }
-
 } // namespace
 
 TEST(reparamState, aFaceRecordIsMadeFoundAndGoesWhenItsGeometryStarts)
@@ -154,7 +136,7 @@ TEST(reparamState, aFaceNoMapTakesKeepsItsFailureAndInputUntilItsGeometry)
 {
   // 130 triangles, one of them degenerate: the face that has it keeps its
   // input triangle
-  createGeometryOf(gridWithADegenerateTriangle());
+  createGeometryOf(gridWithSplitEdge(SPoint3(0., 0., 0.)));
   GModel *m = GModel::current();
   GFace *gf = nullptr;
   for(auto it = m->firstFace(); it != m->lastFace(); ++it)

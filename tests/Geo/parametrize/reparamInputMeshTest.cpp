@@ -19,8 +19,9 @@ namespace {
 
   double area(const std::vector<SPoint3> &p, const std::array<int, 3> &t)
   {
-    return 0.5 * crossprod(SVector3(p[t[0]], p[t[1]]), SVector3(p[t[0]], p[t[2]]))
-                   .norm();
+    return 0.5 *
+           crossprod(SVector3(p[t[0]], p[t[1]]), SVector3(p[t[0]], p[t[2]]))
+             .norm();
   }
 
   // The free edges of the current model's mesh not on the sides of the
@@ -39,25 +40,6 @@ namespace {
       inside += !(onSide(p1) && onSide(p2));
     }
     return inside;
-  }
-
-  // An 8 x 8 grid of the unit square whose edge ab of the cells (4, 4) and
-  // (4, 3) is split by a node m at its midpoint moved by `offset`: the
-  // triangle (b, a, m) degenerate (no offset) or a sliver
-  testTriangulation gridWithSplitEdge(const SPoint3 &offset)
-  {
-    testTriangulation t = rectangleGrid(8, 8, 1., 1.);
-    auto id = [](int i, int j) { return j * 9 + i; };
-    const int a = id(4, 4), b = id(5, 4), below = id(4, 3);
-    const int m = (int)t.points.size();
-    t.points.push_back((t.points[a] + t.points[b]) * 0.5 + offset);
-    auto it = std::find(t.triangles.begin(), t.triangles.end(),
-                        std::array<int, 3>{{below, b, a}});
-    if(it == t.triangles.end()) return t;
-    *it = {{below, b, m}};
-    t.triangles.push_back({{below, m, a}});
-    t.triangles.push_back({{b, a, m}});
-    return t;
   }
 
 } // namespace
@@ -85,10 +67,10 @@ TEST(boundaryStitch, inputBoundaryNodesGiveWayToTheCurvesNodes)
   std::map<std::pair<int, int>, int> edges;
   for(const auto &t : st.triangles) {
     covered += area(all, t);
-    EXPECT_GT(crossprod(SVector3(all[t[0]], all[t[1]]),
-                        SVector3(all[t[0]], all[t[2]]))
-                .z(),
-              0.);
+    EXPECT_GT(
+      crossprod(SVector3(all[t[0]], all[t[1]]), SVector3(all[t[0]], all[t[2]]))
+        .z(),
+      0.);
     for(int k = 0; k < 3; k++)
       edges[std::make_pair(std::min(t[k], t[(k + 1) % 3]),
                            std::max(t[k], t[(k + 1) % 3]))]++;
@@ -160,10 +142,10 @@ TEST(boundaryStitch, loopsWithoutBoundaryNodesStayAsTheyAre)
     stitchToBoundaryNodes(grid.points, grid.triangles, {}, 1e-9);
   EXPECT_EQ(st.triangles, grid.triangles);
   EXPECT_EQ(st.keptInputNodes, 0u);
-  st = stitchToBoundaryNodes(grid.points, grid.triangles,
-                             {SPoint3(0, 0, 0), SPoint3(1, 0, 0),
-                              SPoint3(1, 1, 0), SPoint3(0, 1, 0)},
-                             1e-9);
+  st = stitchToBoundaryNodes(
+    grid.points, grid.triangles,
+    {SPoint3(0, 0, 0), SPoint3(1, 0, 0), SPoint3(1, 1, 0), SPoint3(0, 1, 0)},
+    1e-9);
   EXPECT_LT(st.triangles.size(), grid.triangles.size());
 }
 
@@ -175,7 +157,8 @@ TEST(reparamInputMesh, aFaceMeshedGivesWayToItsInputWhenThatIsNoWorse)
   // never when it keeps none
   testTriangulation t = rectangleGrid(10, 10, 1., 1.);
   for(SPoint3 &p : t.points)
-    p = SPoint3(p.x(), p.y(), 0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
+    p =
+      SPoint3(p.x(), p.y(), 0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
   remeshWithRecipe(t, 0.05);
   GFace *gf = nullptr;
   for(auto it = GModel::current()->firstFace();
