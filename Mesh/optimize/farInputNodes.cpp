@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include "closestTriangle.h"
+#include "edgeUses.h"
 #include "farInputNodes.h"
 #include "meshFidelity.h"
 #include "optimizableMesh.h"
@@ -16,12 +17,7 @@ namespace {
   // Input nodes on an edge used by one triangle (or more than two)
   std::vector<bool> boundaryNodes(const surfaceMesh &input)
   {
-    std::map<std::pair<int, int>, int> uses;
-    for(const std::array<int, 3> &t : input.triangles)
-      for(int k = 0; k < 3; k++) {
-        const int a = t[k], b = t[(k + 1) % 3];
-        uses[std::make_pair(std::min(a, b), std::max(a, b))]++;
-      }
+    const edgeUses uses = edgeUsesOf(input.triangles);
     std::vector<bool> boundary(input.points.size(), false);
     for(const auto &e : uses)
       if(e.second != 2)

@@ -6,6 +6,7 @@
 #include <set>
 #include "SVector3.h"
 #include "closestTriangle.h"
+#include "edgeUses.h"
 #include "flipRepair.h"
 #include "meshFidelity.h"
 #include "optimizableMesh.h"
@@ -95,12 +96,10 @@ namespace {
       }
     }
     // edges used twice are inside: none locked, none used more
-    std::map<std::pair<int, int>, int> uses;
+    edgeUses uses;
     for(int s : c.triangles)
-      for(int k = 0; k < 3; k++) {
-        const int a = _m.triangles[s][k], b = _m.triangles[s][(k + 1) % 3];
-        uses[std::make_pair(std::min(a, b), std::max(a, b))]++;
-      }
+      uses.addTriangle(_m.triangles[s][0], _m.triangles[s][1],
+                       _m.triangles[s][2]);
     for(const auto &u : uses)
       if(u.second > 2 || (u.second == 2 && _m.lockedEdges.count(u.first)))
         return false;
@@ -110,7 +109,7 @@ namespace {
     for(int s : c.triangles)
       for(int k = 0; k < 3; k++) {
         const int a = _m.triangles[s][k], b = _m.triangles[s][(k + 1) % 3];
-        if(uses[std::make_pair(std::min(a, b), std::max(a, b))] != 1) continue;
+        if(uses.of(a, b) != 1) continue;
         if(c.removed.count(a) || !next.insert(std::make_pair(a, b)).second)
           return false;
       }
