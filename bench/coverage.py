@@ -23,13 +23,14 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import meshmeasures  # noqa: E402
 import stlfile  # noqa: E402
 
 # About this many output triangles: the input's own count, capped so the
 # large meshes stay quick to remesh
 MAX_TRIANGLES = 25000
 
-MAP_LABELS = {6: "automatic (6)", 0: "Gmsh (0)"}
+MAP_LABELS = {6: "automatic (6)", 0: "Gmsh (0)", "cgal": "CGAL isotropic"}
 
 
 def mesh_name(stl):
@@ -171,6 +172,31 @@ def read_msh_surface(path):
     return elements
 
 
+def read_msh_nodes(path):
+    """Coordinates of the nodes of an ASCII MSH 4.1 file by tag."""
+    with open(path) as f:
+        lines = iter(f.read().splitlines())
+    nodes = {}
+    for line in lines:
+        if line.strip() != "$Nodes":
+            continue
+        blocks = int(next(lines).split()[0])
+        for _ in range(blocks):
+            count = int(next(lines).split()[3])
+            tags = [int(next(lines)) for _ in range(count)]
+            for tag in tags:
+                nodes[tag] = tuple(float(w) for w in next(lines).split()[:3])
+    return nodes
+
+
+def as_triangles(elements):
+    """Quadrangles cut in two triangles along their first diagonal."""
+    out = []
+    for e in elements:
+        out += [e] if len(e) == 3 else [(e[0], e[1], e[2]), (e[0], e[2], e[3])]
+    return out
+
+
 # The summary block Gmsh prints after meshing repeats the counts under the
 # "Error" or "Warning" prefix (Msg::PrintErrorCounter): not messages
 SUMMARY = re.compile(
@@ -309,15 +335,16 @@ def run_gmsh(gmsh, geo, log, timeout):
 
 
 def measure(gmsh, stl, map_value, input_mesh, timeout, logs,
-            mesher="Mesh.Algorithm = 6;"):
+            mesher="Mesh.Algorithm = 6;", factor=1.0, reference=None):
     """One row's numbers for `stl` remeshed with `map_value` (and the planar
-    mesher's options `mesher`)."""
+    mesher's options `mesher`) at `factor` times the bench's size; with
+    `reference` (reference_surface()), the Hausdorff distance's two sides."""
     triangles, area, loops_in, nonmanifold_in = input_mesh
     with tempfile.TemporaryDirectory(prefix="reparam-coverage-") as folder:
         geo = os.path.join(folder, "recipe.geo")
         with open(geo, "w") as f:
-            f.write(recipe(stl, map_value, mesh_size(area, triangles), folder,
-                           mesher))
+            f.write(recipe(stl, map_value, factor * mesh_size(area, triangles),
+                           folder, mesher))
         log = os.path.join(folder, "gmsh.log")
         status, cpu = run_gmsh(gmsh, geo, log, timeout)
         row = {
@@ -333,6 +360,11 @@ def measure(gmsh, stl, map_value, input_mesh, timeout, logs,
             elements = read_msh_surface(os.path.join(folder, "out.msh"))
         except (OSError, ValueError, StopIteration):  # none, or cut short
             elements = None
+        row["distances"] = None
+        if elements is not None and reference:
+            nodes = read_msh_nodes(os.path.join(folder, "out.msh"))
+            row["distances"] = two_sided(
+                *indexed(nodes, as_triangles(elements)), reference)
         if elements is not None:
             loops, nonmanifold = topology(elements)
             row["out"] = {
@@ -342,13 +374,109 @@ def measure(gmsh, stl, map_value, input_mesh, timeout, logs,
                 "quadrangles": sum(1 for e in elements if len(e) == 4),
             }
         if logs:  # kept to look into a run that is not whole
-            name = "%s-map%d.log" % (mesh_name(stl), map_value)
+            name = "%s-map%d%s.log" % (mesh_name(stl), map_value,
+                                       "" if factor == 1.0 else "-x%g" % factor)
             shutil.copy(log, os.path.join(logs, name))
             shutil.copy(geo, os.path.join(logs, name[:-4] + ".geo"))
             if os.path.exists(os.path.join(folder, "out.msh")):
                 shutil.copy(os.path.join(folder, "out.msh"),
                             os.path.join(logs, name[:-4] + ".msh"))
     row["whole"] = is_whole(row)
+    return row
+
+
+def indexed(nodes, elements):
+    """(points, triangles by index into points) of elements by node tag."""
+    index = {}
+    points = []
+    for e in elements:
+        for n in e:
+            if n not in index:
+                index[n] = len(points)
+                points.append(nodes[n])
+    return points, [tuple(index[n] for n in e) for e in elements]
+
+
+def reference_surface(stl):
+    """The input as the Python measures need it: welded points, triangles,
+    their bucket grid, bounding box diagonal."""
+    points, triangles = meshmeasures.welded_surface(stl)
+    return {
+        "points": points,
+        "triangles": triangles,
+        "grid": meshmeasures.TriangleGrid(points, triangles),
+        "diagonal": meshmeasures.diagonal(points),
+    }
+
+
+def two_sided(points, triangles, reference):
+    """Hausdorff distance mesh -> input and input -> mesh, % of the input's
+    diagonal, sampled on nodes and centroids (as Reparam's report)."""
+    if not triangles:
+        return None
+    grid = meshmeasures.TriangleGrid(points, triangles)
+    percent = 100.0 / reference["diagonal"]
+    return {
+        "mesh to input": percent * meshmeasures.one_sided_hausdorff(
+            points, triangles, reference["grid"]),
+        "input to mesh": percent * meshmeasures.one_sided_hausdorff(
+            reference["points"], reference["triangles"], grid),
+    }
+
+
+def run_cgal(cgal, stl, size, out_stl, timeout):
+    """CGAL's isotropic remeshing as bench/speed.py runs it (3 iterations,
+    borders protected, the same target edge length): (status, CPU)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    status = None
+    try:
+        done = subprocess.run([cgal, stl, "%.9g" % size, "3", out_stl],
+                              capture_output=True, timeout=timeout)
+        if done.returncode:
+            status = ("signal %d" % -done.returncode if done.returncode < 0
+                      else "exit %d" % done.returncode)
+    except subprocess.TimeoutExpired:
+        status = "timeout"
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return status, cpu
+
+
+def cgal_quality(points, triangles, reference, size):
+    """The report's columns for a mesh without a report."""
+    kmin, kmean = meshmeasures.kappa_min_mean(points, triangles)
+    distances = two_sided(points, triangles, reference)
+    return {
+        "meshed": None, "surfaces": None, "kept": None,
+        "hausdorff": distances and max(distances.values()),
+        "inverted": meshmeasures.against_input(
+            points, triangles, reference["points"], reference["triangles"],
+            reference["grid"]),
+        "kappa min": kmin, "kappa mean": kmean,
+        "tau": meshmeasures.tau(points, triangles, size),
+        "optimization": None,
+    }, distances
+
+
+def measure_cgal(cgal, stl, input_mesh, timeout, factor, reference):
+    """One row's numbers for `stl` remeshed by CGAL at the same size."""
+    triangles, area, loops_in, nonmanifold_in = input_mesh
+    size = factor * mesh_size(area, triangles)
+    row = {"cpu": 0.0, "loops in": loops_in, "nonmanifold in": nonmanifold_in,
+           "errors": None, "warnings": None, "layout": None, "report": None,
+           "out": None, "distances": None}
+    with tempfile.TemporaryDirectory(prefix="reparam-coverage-") as folder:
+        out_stl = os.path.join(folder, "cgal.stl")
+        row["status"], row["cpu"] = run_cgal(cgal, stl, size, out_stl, timeout)
+        if row["status"] is None and os.path.exists(out_stl):
+            points, elements = meshmeasures.welded_surface(out_stl)
+            row["report"], row["distances"] = cgal_quality(
+                points, elements, reference, size)
+            loops, nonmanifold = topology(elements)
+            row["out"] = {"loops": loops, "nonmanifold": nonmanifold,
+                          "triangles": len(elements), "quadrangles": 0}
+    row["whole"] = (row["status"] is None and row["out"] is not None
+                    and row["out"]["loops"] == loops_in)
     return row
 
 
@@ -395,7 +523,25 @@ def text(value, form="%s"):
     return "-" if value is None else form % value
 
 
-def table_row(name, map_value, row):
+# With a size sweep or CGAL's rows: the size factor and the measures that
+# compare remeshers (older tables, without them, stay comparable)
+SWEEP_COLUMNS = {
+    "map": ["size factor"],
+    "kappa min": ["kappa mean", "tau (%)", "Hausdorff mesh -> input (%)",
+                  "Hausdorff input -> mesh (%)"],
+    "triangles": ["triangles / asked"],
+}
+
+
+def sweep_columns():
+    columns = []
+    for c in COLUMNS:
+        columns += [c] + SWEEP_COLUMNS.get(c, [])
+    return columns
+
+
+def table_cells(name, map_value, row):
+    """The row's cells by column name (COLUMNS and SWEEP_COLUMNS)."""
     report, out, layout = row["report"], row["out"], row["layout"] or {}
     optimization = report and report["optimization"]
     whole = "yes" if row["whole"] else "NO"
@@ -409,16 +555,21 @@ def table_row(name, map_value, row):
         elements = str(out["triangles"])
         if out["quadrangles"]:
             elements += " + %d quads" % out["quadrangles"]
-    cells = [
+    meshed = "no report"
+    if report and report["meshed"] is not None:
+        meshed = "%d / %d" % (report["meshed"], report["surfaces"])
+    elif report:
+        meshed = "-"
+    cells = dict(zip(COLUMNS, [
         name,
-        MAP_LABELS.get(map_value, "map %d" % map_value),
+        MAP_LABELS.get(map_value, "map %s" % map_value),
         whole,
-        "%d / %d" % (report["meshed"], report["surfaces"]) if report else "no report",
+        meshed,
         text(report and report["kept"]),
         "%d / %s" % (row["loops in"], text(out and out["loops"])),
         "%d / %s" % (row["nonmanifold in"], text(out and out["nonmanifold"])),
-        str(row["errors"]),
-        str(row["warnings"]),
+        text(row["errors"]),
+        text(row["warnings"]),
         text(report and report["hausdorff"], "%.3g"),
         text(report and report["inverted"]),
         text(report and report["kappa min"], "%.3g"),
@@ -431,8 +582,30 @@ def table_row(name, map_value, row):
         text(layout.get("splits")),
         text(layout.get("seconds"), "%.3g"),
         "%.1f" % row["cpu"],
-    ]
-    return "| " + " | ".join(cells) + " |"
+    ]))
+    cells.update(sweep_cells(row))
+    return cells
+
+
+def sweep_cells(row):
+    report, distances, out = row["report"], row.get("distances"), row["out"]
+    return {
+        "size factor": "%g" % row.get("factor", 1.0),
+        "kappa mean": text(report and report["kappa mean"], "%.3f"),
+        "tau (%)": text(report and report["tau"], "%.1f"),
+        "Hausdorff mesh -> input (%)":
+            text(distances and distances["mesh to input"], "%.3g"),
+        "Hausdorff input -> mesh (%)":
+            text(distances and distances["input to mesh"], "%.3g"),
+        "triangles / asked": text(
+            out and row.get("asked") and out["triangles"] / row["asked"],
+            "%.2f"),
+    }
+
+
+def table_row(name, map_value, row, columns=COLUMNS):
+    cells = table_cells(name, map_value, row)
+    return "| " + " | ".join(cells[c] for c in columns) + " |"
 
 
 def cpu_model():
@@ -451,11 +624,11 @@ def command_output(command):
     return (result.stdout + result.stderr).strip() or "unknown"
 
 
-def header(repo, gmsh, timeout, maps):
+def header(repo, gmsh, timeout, maps, factors=(1.0,), cgal=""):
     commit = command_output(["git", "-C", repo, "rev-parse", "--short", "HEAD"])
     # the version names the commit the executable was built from
     version = command_output([gmsh, "-version"])
-    return (
+    text_ = (
         "Coverage of the STL recipe (bench/coverage.sh), %s, commit %s, "
         "%d CPUs (%s), Gmsh %s, timeout %g s, maps %s. Per mesh and map, one gmsh "
         "process runs Merge, ClassifySurfaces{40, 1, 1, 180}, CreateGeometry "
@@ -468,45 +641,89 @@ def header(repo, gmsh, timeout, maps):
             ", ".join(map(str, maps)), MAX_TRIANGLES,
         )
     )
+    if list(factors) != [1.0] or cgal:
+        text_ += (
+            " Size factors %s (times that size; triangles / asked: against "
+            "the input's area / (sqrt(3)/4 h^2)).%s Kappa mean and tau from "
+            "the report (CGAL: the same definitions in bench/meshmeasures.py, "
+            "tau for the constant size, inverted: against the closest input "
+            "facet's normal at the centroid, '-' when the input's facets "
+            "disagree); Hausdorff mesh -> input and input -> mesh sampled "
+            "in Python on nodes and centroids."
+            % (" ".join("%g" % f for f in factors),
+               " CGAL: isotropic remeshing, 3 iterations, borders "
+               "protected, the same h." if cgal else ""))
+    return text_
 
 
-def main():
+def arguments():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--gmsh", required=True)
     parser.add_argument("--timeout", type=float, default=120)
     parser.add_argument("--maps", default="6 0")
+    parser.add_argument("--sizes", default="1",
+                        help="factors applied to the bench's size")
+    parser.add_argument("--cgal", default="",
+                        help="cgalRemesh executable: a CGAL row per mesh and size")
     parser.add_argument("--repo", default=os.path.dirname(os.path.abspath(__file__)))
     parser.add_argument("--logs", help="folder to copy each run's gmsh log to")
     parser.add_argument("meshes", nargs="+")
-    args = parser.parse_args()
+    return parser.parse_args()
+
+
+def mesh_rows(args, stl, maps, factors, sweep):
+    """(map, factor, row) of every run on one mesh, in the table's order."""
+    triangles, area = read_stl(stl)
+    input_mesh = (len(triangles), area) + input_topology(args.gmsh, stl)
+    reference = reference_surface(stl) if sweep else None
+    for factor in factors:
+        runs = [(m, lambda m=m: measure(
+            args.gmsh, stl, m, input_mesh, args.timeout, args.logs,
+            factor=factor, reference=reference)) for m in maps]
+        if args.cgal:
+            runs.append(("cgal", lambda: measure_cgal(
+                args.cgal, stl, input_mesh, args.timeout, factor, reference)))
+        for map_value, run in runs:
+            row = run()
+            row["factor"] = factor
+            row["asked"] = min(len(triangles), MAX_TRIANGLES) / factor ** 2
+            yield map_value, factor, row
+
+
+def summary_label(map_value, factor, sweep):
+    label = MAP_LABELS.get(map_value, "map %s" % map_value)
+    return label + (" at size x%g" % factor if sweep else "")
+
+
+def main():
+    args = arguments()
     maps = [int(m) for m in args.maps.split()]
+    factors = [float(f) for f in args.sizes.split()]
+    sweep = factors != [1.0] or bool(args.cgal)
+    columns = sweep_columns() if sweep else COLUMNS
     if args.logs:
         os.makedirs(args.logs, exist_ok=True)
 
-    print(header(args.repo, args.gmsh, args.timeout, maps))
+    print(header(args.repo, args.gmsh, args.timeout, maps, factors, args.cgal))
     print()
-    print("| " + " | ".join(COLUMNS) + " |")
-    print("|---|---|---|" + "---:|" * (len(COLUMNS) - 3))
+    print("| " + " | ".join(columns) + " |")
+    print("|---|---|" + "---|" * sweep + "---|" + "---:|" * (len(columns) - 3 - sweep))
     whole = collections.Counter()
     cpu = collections.Counter()
+    order = []
     for stl in args.meshes:
-        name = mesh_name(stl)
-        triangles, area = read_stl(stl)
-        input_mesh = (len(triangles), area) + input_topology(args.gmsh, stl)
-        for map_value in maps:
-            row = measure(
-                args.gmsh, stl, map_value, input_mesh, args.timeout, args.logs
-            )
-            whole[map_value] += row["whole"]
-            cpu[map_value] += row["cpu"]
-            print(table_row(name, map_value, row), flush=True)
+        for map_value, factor, row in mesh_rows(args, stl, maps, factors, sweep):
+            key = (map_value, factor)
+            if key not in order:
+                order.append(key)
+            whole[key] += row["whole"]
+            cpu[key] += row["cpu"]
+            print(table_row(mesh_name(stl), map_value, row, columns), flush=True)
     print()
-    for map_value in maps:
-        print(
-            "- %s: %d of %d meshes whole, CPU %.1f s"
-            % (MAP_LABELS.get(map_value, "map %d" % map_value), whole[map_value],
-               len(args.meshes), cpu[map_value])
-        )
+    for key in order:
+        print("- %s: %d of %d meshes whole, CPU %.1f s"
+              % (summary_label(key[0], key[1], sweep), whole[key],
+                 len(args.meshes), cpu[key]))
 
 
 if __name__ == "__main__":
