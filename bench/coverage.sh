@@ -30,7 +30,7 @@
 # then per map the meshes whole and the total CPU time. With a size sweep
 # or CGAL's rows, also the size factor, kappa mean, tau, the Hausdorff
 # distance's two sides and the triangles against the count the size asks
-# (bench/README.md, "Coverage").
+# (bench/README.md, "What each script prints").
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 source "$here/bench/common.sh"
