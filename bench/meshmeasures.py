@@ -143,6 +143,13 @@ class TriangleGrid:
                 for y in range(lo[1], hi[1] + 1):
                     for z in range(lo[2], hi[2] + 1):
                         self.buckets[(x, y, z)].append(index)
+        # bounding spheres: most triangles of a bucket are ruled out by one
+        # distance to the sphere's center
+        self.spheres = []
+        for t in triangles:
+            center = tuple(sum(points[n][i] for n in t) / 3.0 for i in range(3))
+            radius = max(math.dist(center, points[n]) for n in t)
+            self.spheres.append((center, radius))
         keys = list(self.buckets) or [(0, 0, 0)]
         self.lo = [min(k[i] for k in keys) for i in range(3)]
         self.hi = [max(k[i] for k in keys) for i in range(3)]
@@ -175,6 +182,10 @@ class TriangleGrid:
         for r in range(far + 1):
             for bucket in self._ring(key, r):
                 for index in bucket:
+                    center, radius = self.spheres[index]
+                    near = math.dist(p, center) - radius
+                    if near > 0.0 and near * near >= best:
+                        continue
                     a, b, c = (self.points[n] for n in self.triangles[index])
                     d = closest_squared(p, a, b, c)
                     if d < best:
