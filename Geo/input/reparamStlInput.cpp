@@ -97,7 +97,8 @@ std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points)
 {
   if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;
-  std::size_t reversed = 0, dropped = 0;
+  std::size_t reversed = 0, dropped = 0, pillows = 0;
+  SPoint3 firstPillow;
   for(std::vector<SPoint3> &solid : points) {
     // the corners of neighbouring facets are written with the same
     // coordinates: nodes by exact coordinates (Gmsh merges them after)
@@ -111,6 +112,8 @@ std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points)
     }
     const facetRepair r = orientFacets(facets);
     if(!r.reversed && !r.dropped) continue;
+    if(!r.droppedPieces.empty() && !pillows)
+      firstPillow = solid[3 * r.droppedPieces[0]];
     std::vector<SPoint3> kept;
     kept.reserve(solid.size());
     for(std::size_t f = 0; f < facets.size(); f++) {
@@ -124,12 +127,19 @@ std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points)
     solid.swap(kept);
     reversed += r.reversed;
     dropped += r.dropped;
+    pillows += r.droppedPieces.size();
   }
-  if(reversed || dropped)
+  if(pillows)
+    Msg::Warning("Reparam: STL input repaired: %lu facets turned to agree "
+                 "with their neighbours, %lu facets repeating another's "
+                 "nodes dropped, with %lu pieces made only of facets lying "
+                 "on each other (no volume), the first at (%g, %g, %g)",
+                 reversed, dropped, pillows, firstPillow.x(), firstPillow.y(),
+                 firstPillow.z());
+  else if(reversed || dropped)
     Msg::Warning("Reparam: STL input repaired: %lu facets turned to agree "
                  "with their neighbours, %lu facets repeating another's "
                  "nodes dropped",
                  reversed, dropped);
   return reversed + dropped;
 }
-

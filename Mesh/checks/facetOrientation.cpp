@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include "facetOrientation.h"
+#include "unionFind.h"
 
 namespace reparam {
 
@@ -21,9 +22,10 @@ namespace {
     return false;
   }
 
-  // The second of a set of facets with the same nodes is dropped
-  void dropDuplicates(const std::vector<std::array<int, 3> > &facets,
-                      facetRepair &r)
+  // Per facet, the first facet with the same nodes (itself when no other
+  // comes before it with them; -1 when degenerate)
+  std::vector<int>
+  firstWithSameNodes(const std::vector<std::array<int, 3> > &facets)
   {
     std::vector<std::pair<std::array<int, 3>, int> > sorted;
     sorted.reserve(facets.size());
@@ -34,11 +36,62 @@ namespace {
       sorted.push_back({key, (int)i});
     }
     std::sort(sorted.begin(), sorted.end());
-    for(std::size_t i = 1; i < sorted.size(); i++)
-      if(sorted[i].first == sorted[i - 1].first) {
-        r.drop[sorted[i].second] = true;
-        r.dropped++;
+    std::vector<int> first(facets.size(), -1);
+    for(std::size_t i = 0; i < sorted.size(); i++)
+      first[sorted[i].second] = i && sorted[i].first == sorted[i - 1].first ?
+                                  first[sorted[i - 1].second] :
+                                  sorted[i].second;
+    return first;
+  }
+
+  // The connected pieces of the non-degenerate facets through their edges
+  // (however many facets use an edge): a root facet per facet
+  std::vector<int> pieceRoots(const std::vector<std::array<int, 3> > &facets)
+  {
+    std::vector<std::pair<std::uint64_t, int> > edges;
+    edges.reserve(3 * facets.size());
+    for(std::size_t i = 0; i < facets.size(); i++) {
+      if(degenerate(facets[i])) continue;
+      for(int k = 0; k < 3; k++) {
+        const std::uint64_t a = (std::uint32_t)facets[i][k],
+                            b = (std::uint32_t)facets[i][(k + 1) % 3];
+        edges.push_back({std::min(a, b) << 32 | std::max(a, b), (int)i});
       }
+    }
+    std::sort(edges.begin(), edges.end());
+    unionFind pieces(facets.size());
+    for(std::size_t i = 1; i < edges.size(); i++)
+      if(edges[i].first == edges[i - 1].first)
+        pieces.join(edges[i].second, edges[i - 1].second);
+    std::vector<int> root(facets.size());
+    for(std::size_t i = 0; i < facets.size(); i++)
+      root[i] = pieces.find((int)i);
+    return root;
+  }
+
+  // The second of a set of facets with the same nodes is dropped, and a
+  // piece made of such sets only (a pillow: no volume, every edge used
+  // twice by the same nodes) whole: with one facet of each set kept it
+  // would be left open
+  void dropDuplicates(const std::vector<std::array<int, 3> > &facets,
+                      facetRepair &r)
+  {
+    const std::vector<int> first = firstWithSameNodes(facets);
+    std::vector<int> repeats(facets.size(), 0);
+    for(std::size_t i = 0; i < facets.size(); i++)
+      if(first[i] >= 0) repeats[first[i]]++;
+    const std::vector<int> root = pieceRoots(facets);
+    std::vector<char> onlyRepeated(facets.size(), 1);
+    for(std::size_t i = 0; i < facets.size(); i++)
+      if(first[i] >= 0 && repeats[first[i]] < 2) onlyRepeated[root[i]] = 0;
+    for(std::size_t i = 0; i < facets.size(); i++) {
+      if(first[i] < 0) continue;
+      const bool pillow = onlyRepeated[root[i]];
+      if(!pillow && first[i] == (int)i) continue;
+      r.drop[i] = true;
+      r.dropped++;
+      if(pillow && root[i] == (int)i) r.droppedPieces.push_back((int)i);
+    }
   }
 
   // Per kept facet and edge k (corners k, k + 1): the other facet of that
@@ -113,4 +166,3 @@ facetRepair orientFacets(const std::vector<std::array<int, 3> > &facets)
   return r;
 }
 } // namespace reparam
-

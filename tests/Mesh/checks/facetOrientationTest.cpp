@@ -67,6 +67,29 @@ TEST(facetOrientation, aRepeatedFacetIsDroppedWhicheverWayItTurns)
   EXPECT_FALSE(r.drop[9]);
   EXPECT_FALSE(r.reverse[9]);
   EXPECT_EQ(r.reversed, 0u);
+  EXPECT_TRUE(r.droppedPieces.empty());
+}
+
+TEST(facetOrientation, aPieceOfFacetsOnEachOtherIsDroppedWhole)
+{
+  // a strip, a two-facet pillow beside it and a double-sided sheet of four
+  // facets: kept as one facet each they would be open pieces
+  std::vector<std::array<int, 3> > f = strip(3);
+  f.push_back({{100, 101, 102}});
+  f.push_back({{100, 102, 101}});
+  for(std::array<int, 3> g : strip(2)) {
+    for(int &n : g) n += 200;
+    f.push_back(g);
+    std::swap(g[1], g[2]);
+    f.push_back(g);
+  }
+  const facetRepair r = orientFacets(f);
+  EXPECT_EQ(r.dropped, 10u);
+  for(std::size_t i = 0; i < f.size(); i++) EXPECT_EQ(r.drop[i], i >= 6) << i;
+  ASSERT_EQ(r.droppedPieces.size(), 2u);
+  EXPECT_EQ(f[r.droppedPieces[0]][0], 100);
+  EXPECT_GE(f[r.droppedPieces[1]][0], 200);
+  EXPECT_EQ(r.reversed, 0u);
 }
 
 TEST(facetOrientation, separatePiecesEachKeepTheirMajority)
