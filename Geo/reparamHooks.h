@@ -49,6 +49,7 @@ double opt_mesh_compound_fill_holes(int num, int action, double val);
 double opt_mesh_compound_repair(int num, int action, double val);
 double opt_mesh_compound_layout(int num, int action, double val);
 double opt_mesh_compound_noise_size(int num, int action, double val);
+double opt_mesh_compound_feature_scale(int num, int action, double val);
 double opt_mesh_compound_optimize(int num, int action, double val);
 double opt_mesh_compound_mesh_size_gradient(int num, int action, double val);
 double opt_mesh_compound_mesh_size_from_strips(int num, int action,

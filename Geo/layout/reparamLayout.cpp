@@ -1,11 +1,11 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 //
 // The hook ClassifySurfaces{..., forParametrization = 1} calls instead of
-// Gmsh's split loop (patches/0006): Reparam's patch layout (Mesh/layout/patchLayout)
-// on the model's triangles and sharp edges, each part verified with the
-// parametrization CreateGeometry will compute for it; the layout is handed
-// back to Gmsh as the mesh edges between patches, from which Gmsh's own
-// classification builds exactly these patches as discrete surfaces.
+// Gmsh's split loop (patches/0006): Reparam's patch layout
+// (Mesh/layout/patchLayout) on the model's triangles and sharp edges, each part
+// verified with the parametrization CreateGeometry will compute for it; the
+// layout is handed back to Gmsh as the mesh edges between patches, from which
+// Gmsh's own classification builds exactly these patches as discrete surfaces.
 
 #include <algorithm>
 #include <cmath>
@@ -158,6 +158,10 @@ layoutParameters reparamLayoutParameters(const layoutMesh &mesh)
   p.noiseArea = 0.;
   p.noiseWidth = 0.125 * size;
   p.noiseWidthMaxArea = 0.01 * area;
+  // Off by default: the radius that smooths voxel staircases away smooths
+  // the small features of CAD parts too (bench/README.md, "Features at the
+  // mesh's scale")
+  p.featureRadius = getReparamOptions().featureScale * size;
   return p;
 }
 
@@ -246,12 +250,12 @@ namespace {
                         const layoutResult &layout)
   {
     std::set<std::array<int, 2> > sharp;
-    for(const auto &e : model.mesh.featureEdges)
+    for(const auto &e : layout.features)
       sharp.insert({{std::min(e[0], e[1]), std::max(e[0], e[1])}});
     const triangleAdjacency adjacency =
       makeTriangleAdjacency(model.mesh.triangles);
     std::vector<std::array<SPoint3, 2> > smooth, fixed;
-    for(const auto &e : model.mesh.featureEdges)
+    for(const auto &e : layout.features)
       fixed.push_back({{model.mesh.points[e[0]], model.mesh.points[e[1]]}});
     for(std::size_t edge = 0; edge < adjacency.edges.size(); edge++)
       if(adjacency.numTriangles((int)edge) != 2) {
@@ -298,7 +302,7 @@ namespace {
     for(const auto &e : layout.cutEdges)
       cuts.insert({{std::min(e[0], e[1]), std::max(e[0], e[1])}});
     std::vector<std::array<SPoint3, 2> > merged;
-    for(const auto &e : model.mesh.featureEdges)
+    for(const auto &e : layout.features)
       if(!cuts.count({{std::min(e[0], e[1]), std::max(e[0], e[1])}}))
         merged.push_back({{model.mesh.points[e[0]], model.mesh.points[e[1]]}});
     reparamRecordMergedCreases(merged, size);
@@ -368,6 +372,12 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "
               "because %s",
               s.depth, s.triangles, s.parts, s.reason.c_str());
+  if(layout.featuresBelowScale)
+    Msg::Info("Reparam: %lu of %lu sharp edges no features: seen over a "
+              "radius of %g (Mesh.CompoundFeatureScale), less than half "
+              "their angle remains",
+              layout.featuresBelowScale, model.mesh.featureEdges.size(),
+              parameters.featureRadius);
   Msg::Info(
     "Reparam: layout of %lu triangles: %d feature patches, %d noise "
     "patches merged (size %g), %d splits, %d patches (clean %.3g s, "
@@ -388,4 +398,3 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
               u.second.c_str());
   return 1;
 }
-

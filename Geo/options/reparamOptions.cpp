@@ -143,6 +143,12 @@ double opt_mesh_compound_noise_size(OPT_ARGS_NUM)
                            action, val);
 }
 
+double opt_mesh_compound_feature_scale(OPT_ARGS_NUM)
+{
+  return nonNegativeOption(getReparamOptions().featureScale,
+                           "CompoundFeatureScale", action, val);
+}
+
 double opt_mesh_compound_mesh_size_gradient(OPT_ARGS_NUM)
 {
   return nonNegativeOption(getReparamOptions().meshSizeGradient,

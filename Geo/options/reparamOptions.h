@@ -27,6 +27,10 @@ struct reparamOptions {
   // Mesh.CompoundNoiseSize: the mesh size feature patches are noise against
   // (0: the edge of a uniform mesh with as many triangles as the input)
   double noiseSize = 0.;
+  // Mesh.CompoundFeatureScale: sharp edges no longer sharp over a disk of
+  // this many noise sizes are no features (Mesh/layout/featureScale.h);
+  // 0: every sharp edge is one
+  double featureScale = 0.;
   // Mesh.CompoundCurveCorners: nodes of discrete curves on the input's
   // corners
   bool curveCorners = true;
@@ -38,7 +42,8 @@ struct reparamOptions {
   // Mesh.CompoundMeshSizeGradient: where sizes extend from the boundary,
   // the size of a short boundary segment grows by this much per unit
   // distance into the face, and along discrete curves the size from the
-  // ends of the short curves (Geo/sizes/reparamSizeGrading.cpp); 0: Gmsh's sizes
+  // ends of the short curves (Geo/sizes/reparamSizeGrading.cpp); 0: Gmsh's
+  // sizes
   double meshSizeGradient = 0.5;
   // Mesh.CompoundMeshSizeFromStrips: with a gradient, the surfaces
   // narrower than the size give their curves sizes of their width

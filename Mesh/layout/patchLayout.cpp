@@ -5,6 +5,7 @@
 #include <mutex>
 #include <thread>
 #include "SVector3.h"
+#include "featureScale.h"
 #include "patchLayout.h"
 #include "stageTimer.h"
 #include "triangleAdjacency.h"
@@ -213,6 +214,12 @@ layoutResult computePatchLayout(const layoutMesh &mesh,
   double t0 = wallSeconds();
   triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
   std::vector<char> feature = featureEdgeFlags(mesh, adjacency);
+  result.featuresBelowScale =
+    dropFeaturesBelowScale(mesh, adjacency, parameters.featureRadius, feature);
+  for(const auto &f : mesh.featureEdges) {
+    const int e = adjacency.find(f[0], f[1]);
+    if(e < 0 || feature[e]) result.features.push_back(f);
+  }
   int numPatches = 0;
   std::vector<int> patch = featurePatches(mesh, adjacency, feature, numPatches);
   result.featurePatches = numPatches;
@@ -246,4 +253,3 @@ layoutResult computePatchLayout(const layoutMesh &mesh,
   return result;
 }
 } // namespace reparam
-

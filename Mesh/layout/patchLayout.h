@@ -38,6 +38,10 @@ struct layoutParameters {
   double noiseArea = 0.;
   double noiseWidth = 0.;
   double noiseWidthMaxArea = 0.;
+  // Sharp edges whose dihedral angle, seen over a disk of this radius,
+  // falls below half their own are no features (featureScale.h; 0: every
+  // sharp edge is one)
+  double featureRadius = 0.;
   // Cuts of one feature patch, at most this deep (each halves it or so)
   int maxDepth = 48;
   // A part refused for its size alone is cut by the Fiedler vector of
@@ -73,6 +77,10 @@ struct layoutSplit {
 struct layoutResult {
   std::vector<int> patch; // per triangle: 0 .. numPatches - 1
   int numPatches = 0;
+  // The sharp edges kept as features (node pairs, of mesh.featureEdges), and
+  // how many were sharp below featureRadius only
+  std::vector<std::array<int, 2> > features;
+  std::size_t featuresBelowScale = 0;
   int featurePatches = 0; // patches between sharp edges
   int mergedNoise = 0; // noise patches merged into a neighbour
   int cleanedPatches = 0; // feature patches left after the merges

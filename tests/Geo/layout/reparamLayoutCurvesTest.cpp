@@ -1,10 +1,13 @@
 // Reparam - the curves ClassifySurfaces builds from Reparam's layout: every
-// face bounded by closed loops, also where two loops touch at one node
+// face bounded by closed loops, also where two loops touch at one node; the
+// sharp edges that are features (Mesh.CompoundFeatureScale)
 
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 #include "testPatches.h"
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -52,7 +55,50 @@ namespace {
     return open;
   }
 
+  // Stairs of 12 unit treads and risers, 6 wide, a cell of the grid per
+  // unit: the voxel faces of a mask of an inclined plane
+  testTriangulation staircase()
+  {
+    const int steps = 12, perUnit = 1;
+    testTriangulation t =
+      rectangleGrid(2 * steps * perUnit, 6 * perUnit, 2. * steps, 6.);
+    for(SPoint3 &p : t.points) {
+      const double s = p.x(); // along the profile: tread, riser, tread...
+      const int k = std::min((int)std::floor(s / 2.), steps - 1);
+      const double along = s - 2. * k;
+      p = along <= 1. ? SPoint3(k + along, p.y(), k) :
+                        SPoint3(k + 1., p.y(), k + along - 1.);
+    }
+    return t;
+  }
+
+  std::size_t numSurfaces()
+  {
+    gmsh::vectorpair faces;
+    gmsh::model::getEntities(faces, 2);
+    return faces.size();
+  }
+
 } // namespace
+
+TEST(layoutCurves, featureScaleSmoothsAStaircase)
+{
+  // every tread and riser a surface
+  std::vector<std::string> log = remeshWithRecipe(staircase(), 0.5);
+  EXPECT_EQ(numSurfaces(), 24u);
+  gmsh::option::setNumber("Mesh.CompoundFeatureScale", 3);
+  log = remeshWithRecipe(staircase(), 0.5);
+  gmsh::option::setNumber("Mesh.CompoundFeatureScale", 0);
+  // the steps near the ends stay: a few surfaces
+  EXPECT_LE(numSurfaces(), 6u);
+  bool logged = false;
+  for(const std::string &l : log) {
+    EXPECT_EQ(l.find("Error"), std::string::npos) << l;
+    logged |= l.find("(Mesh.CompoundFeatureScale)") != std::string::npos;
+  }
+  EXPECT_TRUE(logged);
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+}
 
 TEST(layoutCurves, loopsTouchingAtOneNodeStayClosed)
 {
