@@ -370,8 +370,12 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
 
   for(const layoutSplit &s : layout.splits)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "
-              "because %s",
-              s.depth, s.triangles, s.parts, s.reason.c_str());
+              "because %s%s",
+              s.depth, s.triangles, s.parts, s.reason.c_str(),
+              s.movedFans ? (" (the cut moved off " +
+                             std::to_string(s.movedFans) + " pinched nodes)")
+                              .c_str() :
+                            "");
   if(layout.featuresBelowScale)
     Msg::Info("Reparam: %lu of %lu sharp edges no features: seen over a "
               "radius of %g (Mesh.CompoundFeatureScale), less than half "

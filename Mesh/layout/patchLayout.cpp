@@ -9,6 +9,7 @@
 #include "patchLayout.h"
 #include "stageTimer.h"
 #include "triangleAdjacency.h"
+#include "unpinchCut.h"
 
 namespace reparam {
 
@@ -66,6 +67,27 @@ namespace {
     return child;
   }
 
+  // The part's two sides (side[i] of part.triangles[i]) as the outcome's
+  // parts, each edge-connected piece of a side one part
+  void cutInTwo(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+                const pendingPart &part, const std::vector<char> &side,
+                partOutcome &out)
+  {
+    std::vector<int> halves[2];
+    for(std::size_t i = 0; i < side.size(); i++)
+      halves[(int)side[i]].push_back(part.triangles[i]);
+    out.split = true;
+    out.record.triangles = part.triangles.size();
+    out.record.depth = part.depth;
+    out.record.reason = out.check.reason;
+    for(auto &h : halves)
+      for(auto &c : partComponents(adjacency, h, mesh.triangles.size())) {
+        const int index = (int)out.parts.size();
+        out.parts.push_back(childOf(part, std::move(c), part.depth + 1, index));
+        out.record.parts++;
+      }
+  }
+
   // One part verified, and cut if refused: first into its edge-connected
   // components, then in two by bisectPart. Each cut leaves strictly smaller
   // parts and the depth is bounded, so the cutting ends. Reads only the
@@ -86,28 +108,24 @@ namespace {
           childOf(part, std::move(components[i]), part.depth, (int)i));
       return out;
     }
+    std::vector<char> side =
+      separateFansAtPinch(mesh, adjacency, part.triangles);
+    if(!side.empty()) {
+      // a pinched part fails whatever its map: not mapped
+      out.check = {false, "its boundary touches itself at a node", false};
+      cutInTwo(mesh, adjacency, part, side, out);
+      return out;
+    }
     out.check = verify(part.triangles);
     if(out.check.ok || part.triangles.size() < 2 ||
        part.depth >= parameters.maxDepth) {
       out.kept = true;
       return out;
     }
-    std::vector<char> side =
-      bisectPart(mesh, adjacency, part.triangles,
-                 out.check.bySize ? parameters.coarseCutNodes : 0);
-    std::vector<int> halves[2];
-    for(std::size_t i = 0; i < side.size(); i++)
-      halves[(int)side[i]].push_back(part.triangles[i]);
-    out.split = true;
-    out.record.triangles = part.triangles.size();
-    out.record.depth = part.depth;
-    out.record.reason = out.check.reason;
-    for(auto &h : halves)
-      for(auto &c : partComponents(adjacency, h, mesh.triangles.size())) {
-        const int index = (int)out.parts.size();
-        out.parts.push_back(childOf(part, std::move(c), part.depth + 1, index));
-        out.record.parts++;
-      }
+    side = bisectPart(mesh, adjacency, part.triangles,
+                      out.check.bySize ? parameters.coarseCutNodes : 0);
+    out.record.movedFans = unpinchCut(mesh, adjacency, part.triangles, side);
+    cutInTwo(mesh, adjacency, part, side, out);
     return out;
   }
 

@@ -72,6 +72,9 @@ struct layoutSplit {
   int depth = 0;
   std::size_t parts = 0;
   std::string reason;
+  // fans of triangles moved across the cut where it pinched a side
+  // (unpinchCut.h)
+  std::size_t movedFans = 0;
 };
 
 struct layoutResult {
