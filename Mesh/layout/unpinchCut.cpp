@@ -42,15 +42,10 @@ namespace {
     std::size_t round()
     {
       std::size_t moved = 0;
-      const auto &byNode = _around.byNode;
-      for(std::size_t i = 0; i < byNode.size();) {
-        std::size_t j = i;
-        std::vector<int> at;
-        for(; j < byNode.size() && byNode[j].first == byNode[i].first; j++)
-          at.push_back(byNode[j].second);
-        for(char s = 0; s < 2; s++) moved += unpinch(byNode[i].first, at, s);
-        i = j;
-      }
+      anyNode([&](int v, const std::vector<int> &at) {
+        for(char s = 0; s < 2; s++) moved += unpinch(v, at, s);
+        return false;
+      });
       return moved;
     }
 
@@ -58,20 +53,16 @@ namespace {
     // those fans; -1 and none when there is no such node
     int pinchedNode(char s, std::vector<std::vector<int> > &fansThere) const
     {
-      const auto &byNode = _around.byNode;
-      for(std::size_t i = 0; i < byNode.size();) {
-        std::size_t j = i;
-        std::vector<int> at;
-        for(; j < byNode.size() && byNode[j].first == byNode[i].first; j++)
-          at.push_back(byNode[j].second);
-        if(at.size() > 1) {
-          fansThere = fans(byNode[i].first, at, s);
-          if(fansThere.size() > 1) return byNode[i].first;
-        }
-        i = j;
-      }
-      fansThere.clear();
-      return -1;
+      int node = -1;
+      anyNode([&](int v, const std::vector<int> &at) {
+        if(at.size() < 2) return false;
+        fansThere = fans(v, at, s);
+        if(fansThere.size() < 2) return false;
+        node = v;
+        return true;
+      });
+      if(node < 0) fansThere.clear();
+      return node;
     }
 
     // Every triangle of the part on the side of the seed it is fewest
@@ -95,6 +86,21 @@ namespace {
     }
 
   private:
+    // f(node, the part's triangles around it) for each node of the part in
+    // turn, until f returns true
+    template <class F> void anyNode(F f) const
+    {
+      const auto &byNode = _around.byNode;
+      for(std::size_t i = 0; i < byNode.size();) {
+        std::size_t j = i;
+        std::vector<int> at;
+        for(; j < byNode.size() && byNode[j].first == byNode[i].first; j++)
+          at.push_back(byNode[j].second);
+        if(f(byNode[i].first, at)) return;
+        i = j;
+      }
+    }
+
     // The part's triangle across edge e of (part) triangle i, or -1
     int across(int i, int e) const
     {
