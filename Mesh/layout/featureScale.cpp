@@ -66,6 +66,13 @@ namespace {
       return angleBetween(first, second);
     }
 
+    // The angle between the normals of edge e's two triangles
+    double ownDihedral(int e) const
+    {
+      const int *t = &_adjacency.edgeTriangles[_adjacency.edgeStart[e]];
+      return angleBetween(_normal[t[0]], _normal[t[1]]);
+    }
+
   private:
     // Calls f on t1, t2 and every triangle reached from them across
     // manifold edges whose centroid lies within radius of middle
@@ -98,18 +105,6 @@ namespace {
     std::vector<int> _front;
   };
 
-  double ownDihedral(const layoutMesh &mesh, const triangleAdjacency &adjacency,
-                     int e)
-  {
-    const int *t = &adjacency.edgeTriangles[adjacency.edgeStart[e]];
-    auto normal = [&](int i) {
-      const auto &n = mesh.triangles[i];
-      return crossprod(SVector3(mesh.points[n[0]], mesh.points[n[1]]),
-                       SVector3(mesh.points[n[0]], mesh.points[n[2]]));
-    };
-    return angleBetween(normal(t[0]), normal(t[1]));
-  }
-
 } // namespace
 
 double dihedralAtScale(const layoutMesh &mesh,
@@ -131,7 +126,7 @@ std::size_t dropFeaturesBelowScale(const layoutMesh &mesh,
     if(!featureEdge[e] || adjacency.numTriangles((int)e) != 2) continue;
     const double atScale = probe.dihedral((int)e, radius);
     if(atScale < 0.) continue;
-    if(atScale < 0.5 * ownDihedral(mesh, adjacency, (int)e)) {
+    if(atScale < 0.5 * probe.ownDihedral((int)e)) {
       featureEdge[e] = 0;
       dropped++;
     }
