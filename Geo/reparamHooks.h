@@ -185,6 +185,10 @@ bool reparamMeshFromInput(GFace *gf);
 // After a Delaunay-based mesher: gf's mesh repaired, and kept when the few
 // elements Gmsh's test rejects cross folds thinner than the mesh size
 bool reparamKeepPlanarMesh(GFace *gf);
+// Gmsh's planar mesher cannot recover a segment of ge in gf's (u, v)
+// plane: true when Reparam meshes gf with its input triangles instead
+// (reparamEndFaceMeshing), Gmsh's error then not given
+bool reparamLostCurveSegment(GFace *gf, GEdge *ge);
 // Whether gf's mesh leaves a segment of its curves unused (a hole)
 bool reparamPlanarMeshLeavesHole(GFace *gf);
 // After MeshAdapt: gf's mesh compared with the other meshers' where it

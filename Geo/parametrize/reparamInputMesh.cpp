@@ -1,6 +1,7 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 #include <set>
 #include <unordered_map>
@@ -248,8 +249,10 @@ bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
   static_cast<surfaceMesh &>(input) = inputTriangulationOf(gf);
   std::vector<MVertex *> boundary;
   const stitchedTriangulation stitched = stitchToCurves(gf, input, boundary);
+  // (SIZE_MAX: gf has no other mesh, its stitching may turn triangles)
   if(stitched.unplacedNodes || stitched.keptInputNodes ||
-     stitched.turnedTriangles || stitched.triangles.empty())
+     (stitched.turnedTriangles && against != SIZE_MAX) ||
+     stitched.triangles.empty())
     return false;
   // no more triangles against the input than the planar mesh kept (where
   // the input itself folds, the test finds its own triangles against it;

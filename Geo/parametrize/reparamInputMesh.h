@@ -25,7 +25,8 @@ namespace reparam {
 // against the input (and turns none in the stitching); false otherwise
 bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against);
 // The same for any `reason` (the warning's end), if that leaves no more
-// than `against` triangles against the input
+// than `against` triangles against the input (SIZE_MAX: gf has no mesh
+// otherwise, and the stitching may turn triangles too)
 bool reparamMeshFaceWithItsInput(GFace *gf, std::size_t against,
                                  const std::string &reason);
 

@@ -6,11 +6,14 @@
 // recombined into quadrangles its crease curves taken out
 // (Geo/layout/reparamCreaseCurves.h). Also whether Gmsh's recombination may use
 // the face's parametrization (hook in recombineIntoQuads, patches/0015), and
-// whether curves and surfaces may be meshed in parallel (patches/0018).
+// whether curves and surfaces may be meshed in parallel (patches/0018). A
+// face its planar mesher left empty is meshed with its input
+// (Geo/planar/reparamLostSegments.h).
 
 #include "reparamCreaseCurves.h"
 #include "reparamCurvatureMetric.h"
 #include "reparamHooks.h"
+#include "reparamLostSegments.h"
 #include "reparamOptions.h"
 #include "reparamReport.h"
 #include "reparamSizeGrading.h"
@@ -82,6 +85,7 @@ void reparamEndFaceMeshing(GFace *gf)
   restoreCrossField();
   reparamEndSizeGrading(gf);
   reparamRestoreCreaseCurves(gf);
+  meshFaceWithLostSegments(gf);
   int &meshing = thisThreadsFaceMeshing().meshing;
   if(meshing > 0 && !--meshing) curvesLock().unlock_shared();
 }

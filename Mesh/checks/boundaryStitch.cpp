@@ -175,6 +175,22 @@ namespace {
     return true;
   }
 
+  // p's only triangle (a tip of a sliver) removed leaves its edge opposite
+  // p on the boundary, if another triangle holds that edge (else nothing
+  // would be left of that piece)
+  bool tipOverEdge(const stitching &st, const std::vector<int> &around, int p,
+                   int q)
+  {
+    if(around.size() != 1) return false;
+    const std::array<int, 3> &tip = st.triangles[around[0]];
+    int r = -1;
+    for(int n : tip)
+      if(n != p && n != q) r = n;
+    for(int t : st.around(q))
+      if(t != around[0] && st.has(t, r)) return true;
+    return false;
+  }
+
   // Collapsing p onto q: the triangles it turns against their input normal,
   // or -1 when it would make an edge non-manifold or leave no triangle
   int turnedByCollapse(const stitching &st, const std::vector<int> &around,
@@ -201,7 +217,8 @@ namespace {
     }
     // the link condition: the common neighbours of p and q are the third
     // nodes of the triangles they share
-    if(shared == 0 || (int)common.size() > shared || !kept) return -1;
+    if(shared == 0 || (int)common.size() > shared) return -1;
+    if(!kept && !tipOverEdge(st, around, p, q)) return -1;
     return turned;
   }
 

@@ -31,7 +31,9 @@ struct stitchedTriangulation {
 // (within `tolerance`, absolute), taking the place of an input node it
 // coincides with; then every other input node of the boundary loops that
 // got boundary nodes is collapsed onto a boundary neighbour, the one that
-// turns no triangle if it can (a loop without any is left as it is).
+// turns no triangle if it can (a loop without any is left as it is; a
+// node whose only triangle is a sliver's tip goes with that triangle when
+// its third edge stays inside).
 // Labels, when given, say which curve or corner each point is on, so that
 // boundary edges of different curves lying on each other (a degenerate
 // triangle's) are told apart: a node goes to an edge whose both ends carry

@@ -12,6 +12,7 @@
 #include "gmshTestEnvironment.h"
 #include "reparamHooks.h"
 #include "reparamInputMesh.h"
+#include "reparamLostSegments.h"
 
 using namespace reparam;
 
@@ -108,6 +109,32 @@ TEST(boundaryStitch, nodesOffTheBoundaryAreLeftOut)
   EXPECT_NEAR(covered, 1., 1e-12);
 }
 
+TEST(boundaryStitch, aSliversTipTriangleGoesWithItsInputNode)
+{
+  // the unit square in 2 triangles and a tip triangle on its right side;
+  // the curve runs along the square's corners, straight past the tip node
+  const std::vector<SPoint3> points = {SPoint3(0, 0, 0), SPoint3(1, 0, 0),
+                                       SPoint3(1, 1, 0), SPoint3(0, 1, 0),
+                                       SPoint3(1.5, 0.5, 0)};
+  const std::vector<std::array<int, 3> > triangles = {
+    {{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 2}}};
+  const std::vector<SPoint3> curve(points.begin(), points.begin() + 4);
+  stitchedTriangulation st =
+    stitchToBoundaryNodes(points, triangles, curve, 1e-9);
+  EXPECT_EQ(st.unplacedNodes, 0u);
+  EXPECT_EQ(st.keptInputNodes, 0u);
+  EXPECT_EQ(st.turnedTriangles, 0u);
+  ASSERT_EQ(st.triangles.size(), 2u);
+  std::vector<SPoint3> all = points;
+  all.insert(all.end(), curve.begin(), curve.end());
+  double covered = 0.;
+  for(const auto &t : st.triangles) {
+    covered += area(all, t);
+    for(int n : t) EXPECT_GE(n, 5);
+  }
+  EXPECT_NEAR(covered, 1., 1e-12);
+}
+
 TEST(reparamInputMesh, faceWithADegenerateTriangleKeepsItAndTheMeshIsWhole)
 {
   // an 8 x 8 grid of the unit square with a zero-area triangle (b, a, m)
@@ -179,6 +206,40 @@ TEST(reparamInputMesh, aFaceMeshedGivesWayToItsInputWhenThatIsNoWorse)
   EXPECT_GE(gf->triangles.size(), 200u);
   EXPECT_LT(gf->triangles.size(), meshed);
   // whole: the free edges on the square's sides only
+  std::size_t nonManifold = 0;
+  EXPECT_EQ(freeEdgesOffTheUnitSquaresSides(nonManifold), 0);
+  EXPECT_EQ(nonManifold, 0u);
+}
+
+TEST(reparamLostSegments, aFaceItsMesherLeftEmptyIsMeshedWithItsInput)
+{
+  // the bumpy square remeshed by the recipe; its planar mesher then said to
+  // have lost a segment of one of its curves and left it empty: meshed with
+  // its input, stitched to its curves, and the mesh whole
+  testTriangulation t = rectangleGrid(10, 10, 1., 1.);
+  for(SPoint3 &p : t.points)
+    p =
+      SPoint3(p.x(), p.y(), 0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
+  remeshWithRecipe(t, 0.05);
+  GFace *gf = nullptr;
+  for(auto it = GModel::current()->firstFace();
+      it != GModel::current()->lastFace(); ++it)
+    if(!(*it)->stl_triangles.empty()) gf = *it;
+  ASSERT_NE(gf, nullptr);
+  ASSERT_FALSE(gf->edges().empty());
+  // a face still meshed keeps its mesh
+  EXPECT_TRUE(reparamLostCurveSegment(gf, gf->edges()[0]));
+  const std::size_t meshed = gf->triangles.size();
+  meshFaceWithLostSegments(gf);
+  EXPECT_EQ(gf->triangles.size(), meshed);
+  EXPECT_FALSE(keptAsInput(gf));
+  // an empty one gets its input
+  EXPECT_TRUE(reparamLostCurveSegment(gf, gf->edges()[0]));
+  gf->deleteMesh();
+  meshFaceWithLostSegments(gf);
+  EXPECT_GE(gf->triangles.size(), 200u);
+  EXPECT_TRUE(keptAsInput(gf));
+  EXPECT_EQ(gf->meshStatistics.status, GFace::DONE);
   std::size_t nonManifold = 0;
   EXPECT_EQ(freeEdgesOffTheUnitSquaresSides(nonManifold), 0);
   EXPECT_EQ(nonManifold, 0u);

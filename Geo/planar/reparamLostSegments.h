@@ -1,0 +1,27 @@
+// Reparam - optimal discrete parametrizations for Gmsh compound surfaces
+//
+// A face whose planar mesh cannot be made: Gmsh's Delaunay-based meshers
+// recover each segment of the face's curves in its (u, v) plane, split the
+// segments they cannot recover and try again, and give up with an error
+// after ten rounds, leaving the face without elements (a hole). Where the
+// curve bounds a sliver thinner than the mesh size (a lens a twentieth of
+// the size wide between a flat spot and the face around it), its segments
+// in (u, v) stay too close to recover at any split. The safety net then
+// meshes the face with its input triangles stitched to its curves, with one
+// warning naming it (hook in meshGFace.cpp's recoverEdge, patches/0008).
+
+#ifndef REPARAM_LOST_SEGMENTS_H
+#define REPARAM_LOST_SEGMENTS_H
+
+class GFace;
+
+namespace reparam {
+
+// After gf's planar mesher (reparamEndFaceMeshing): gf meshed with its
+// input triangles if the mesher lost a curve segment and left it empty;
+// an error if even that fails
+void meshFaceWithLostSegments(GFace *gf);
+
+} // namespace reparam
+
+#endif
