@@ -28,8 +28,9 @@ int reparamEmbedCreaseCurves(GFace *gf, const std::vector<MVertex *> &nodes,
 // Before the curves are meshed (the mesh size is known then, not when
 // CreateGeometry kept the creases, at the input's scale): the crease curves
 // too small for the mesh size asked at their middle (Mesh/layout/creaseChains.h,
-// creaseTooSmallForMesh: shorter than three sizes and bent, or ending
-// within half a size of another curve of their face) taken out of their
+// creaseTooSmallForMesh: shorter than three sizes and bent, ending within
+// half a size of another curve of their face, or coming back beside
+// themselves closer than half a size) taken out of their
 // faces until each is meshed, and, once Mesh1D is done, their 1D meshes
 // deleted with those of their end points no other curve or face uses
 // (reparamDeleteHiddenCreaseMeshes). The mesh may then cut the crease: the

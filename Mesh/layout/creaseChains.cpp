@@ -73,6 +73,30 @@ namespace {
     return l;
   }
 
+  // Whether the polyline comes back beside itself: a point of it nearer
+  // than `gap` to an earlier segment, or a segment of it nearer than that
+  // to an earlier point, more than three times that distance back along it
+  // (a hairpin, not a turn)
+  bool foldsBack(const std::vector<SPoint3> &line, double gap)
+  {
+    std::vector<double> arc(line.size(), 0.);
+    for(std::size_t i = 1; i < line.size(); i++)
+      arc[i] = arc[i - 1] + line[i - 1].distance(line[i]);
+    auto fold = [gap](double distance, double along) {
+      return distance < gap && along > 3. * distance;
+    };
+    for(std::size_t i = 2; i < line.size(); i++)
+      for(std::size_t j = 0; j + 1 < i; j++) {
+        const SPoint3 q = closestPointOnSegment(line[i], line[j], line[j + 1]);
+        const SPoint3 r = closestPointOnSegment(line[j], line[i - 1], line[i]);
+        if(fold(line[i].distance(q), arc[i] - arc[j] - line[j].distance(q)) ||
+           fold(line[j].distance(r),
+                arc[i - 1] + line[i - 1].distance(r) - arc[j]))
+          return true;
+      }
+    return false;
+  }
+
 } // namespace
 
 std::vector<int>
@@ -126,6 +150,7 @@ bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
                            double size)
 {
   if(crease.size() < 2 || !(size > 0.)) return false;
+  if(foldsBack(crease, 0.5 * size)) return true;
   double length = 0.;
   for(std::size_t i = 0; i + 1 < crease.size(); i++)
     length += crease[i].distance(crease[i + 1]);

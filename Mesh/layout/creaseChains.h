@@ -43,7 +43,10 @@ creaseChains(const std::vector<SPoint3> &points,
 // and its ends are corners inside the face (a crease doubling back on
 // itself leaves a sliver between two of its segments); between an end and a
 // curve passing closer than half a size the mesh must put a triangle
-// narrower than that. A straight short crease away from others is meshed
+// narrower than that. Of any length, one that comes back beside itself
+// closer than half a size (a hairpin at the mesh's scale) is too small too:
+// its 1D mesh turns back on itself and the triangle between two of its
+// segments is a sliver. A straight short crease away from others is meshed
 // along as well as a long one (bench/README.md#tips-and-creases)
 bool creaseTooSmallForMesh(const std::vector<SPoint3> &crease,
                            const std::vector<std::vector<SPoint3> > &others,

@@ -43,6 +43,21 @@ namespace {
     return inside;
   }
 
+  // A bumpy square remeshed by the recipe (one face, nothing against the
+  // input) at size 0.05: its face
+  GFace *remeshedBumpySquare()
+  {
+    testTriangulation t = rectangleGrid(10, 10, 1., 1.);
+    for(SPoint3 &p : t.points)
+      p = SPoint3(p.x(), p.y(),
+                  0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
+    remeshWithRecipe(t, 0.05);
+    for(auto it = GModel::current()->firstFace();
+        it != GModel::current()->lastFace(); ++it)
+      if(!(*it)->stl_triangles.empty()) return *it;
+    return nullptr;
+  }
+
 } // namespace
 
 TEST(boundaryStitch, inputBoundaryNodesGiveWayToTheCurvesNodes)
@@ -182,15 +197,7 @@ TEST(reparamInputMesh, aFaceMeshedGivesWayToItsInputWhenThatIsNoWorse)
   // input): its input triangles stitched to its curves replace its mesh
   // when the planar mesh is said to keep one triangle against the input,
   // never when it keeps none
-  testTriangulation t = rectangleGrid(10, 10, 1., 1.);
-  for(SPoint3 &p : t.points)
-    p =
-      SPoint3(p.x(), p.y(), 0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
-  remeshWithRecipe(t, 0.05);
-  GFace *gf = nullptr;
-  for(auto it = GModel::current()->firstFace();
-      it != GModel::current()->lastFace(); ++it)
-    if(!(*it)->stl_triangles.empty()) gf = *it;
+  GFace *gf = remeshedBumpySquare();
   ASSERT_NE(gf, nullptr);
   const std::size_t meshed = gf->triangles.size();
   EXPECT_GT(meshed, 500u); // size 0.05 on the unit square
@@ -216,15 +223,7 @@ TEST(reparamLostSegments, aFaceItsMesherLeftEmptyIsMeshedWithItsInput)
   // the bumpy square remeshed by the recipe; its planar mesher then said to
   // have lost a segment of one of its curves and left it empty: meshed with
   // its input, stitched to its curves, and the mesh whole
-  testTriangulation t = rectangleGrid(10, 10, 1., 1.);
-  for(SPoint3 &p : t.points)
-    p =
-      SPoint3(p.x(), p.y(), 0.1 * std::sin(3. * p.x()) * std::cos(2. * p.y()));
-  remeshWithRecipe(t, 0.05);
-  GFace *gf = nullptr;
-  for(auto it = GModel::current()->firstFace();
-      it != GModel::current()->lastFace(); ++it)
-    if(!(*it)->stl_triangles.empty()) gf = *it;
+  GFace *gf = remeshedBumpySquare();
   ASSERT_NE(gf, nullptr);
   ASSERT_FALSE(gf->edges().empty());
   // a face still meshed keeps its mesh

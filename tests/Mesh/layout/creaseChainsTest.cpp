@@ -185,6 +185,20 @@ TEST(creaseChains, creaseTooSmallWhenShortAndBentOrEndingByAnotherCurve)
   std::vector<SPoint3> longer;
   for(SPoint3 p : straight) longer.push_back(p * 2.5);
   EXPECT_FALSE(creaseTooSmallForMesh(longer, {nearEnd}, size));
+  // a hairpin 6 sizes long, its legs 0.3 of a size apart: too small
+  // whatever its length; its legs 1.5 sizes apart: kept
+  for(double gap : {0.3, 1.5}) {
+    const std::vector<SPoint3> pin = {SPoint3(0., 0., 0.), SPoint3(3., 0., 0.),
+                                      SPoint3(3., gap, 0.),
+                                      SPoint3(0., gap, 0.)};
+    EXPECT_EQ(creaseTooSmallForMesh(pin, {}, size), gap < 0.5) << gap;
+  }
+  // three points whose second segment passes 0.2 of a size by the first
+  // point, 5.6 sizes long: too small (its mesh: a triangle between its
+  // first and last segments)
+  const std::vector<SPoint3> passing = {
+    SPoint3(0., 0., 0.), SPoint3(0., 0., -2.8), SPoint3(0.2, 0., 2.8)};
+  EXPECT_TRUE(creaseTooSmallForMesh(passing, {}, size));
   // a crease of one point, or no size: nothing to say
   EXPECT_FALSE(creaseTooSmallForMesh({SPoint3(0., 0., 0.)}, {}, size));
   EXPECT_FALSE(creaseTooSmallForMesh(hairpin, {}, 0.));
