@@ -89,15 +89,14 @@ struct faceRecord {
   // Its meshes (Geo/planar, Geo/optimize, Geo/quad): what the
   // optimization did, the mesh made of its input after meshing
   // (reparamMeshFaceWithItsInput), the mesh its quadrangles were smoothed
-  // to (Geo/quad/reparamSmoothQuads.cpp), whether BAMG failed on it or
-  // the planar mesher lost a curve segment, the crease curves taken out
-  // while it is recombined
+  // to (Geo/quad/reparamSmoothQuads.cpp), whether BAMG failed on it, the
+  // curve of a segment the planar mesher could not recover (0: none; reset
+  // once the face is meshed, Geo/planar/reparamLostSegments.h), the crease
+  // curves taken out while it is recombined
   std::optional<optimizationRecord> optimization;
   std::optional<meshIdentity> meshedWithInput;
   std::optional<meshIdentity> smoothedQuads;
   bool bamgFailed = false;
-  // the curve of a segment Gmsh's planar mesher could not recover (0:
-  // none), reset when the face is meshed (Geo/planar/reparamLostSegments.h)
   int lostSegmentCurve = 0;
   std::vector<GEdge *> hiddenCreases;
   // Its sizes (Geo/sizes)

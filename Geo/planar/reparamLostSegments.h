@@ -4,9 +4,10 @@
 // recover each segment of the face's curves in its (u, v) plane, split the
 // segments they cannot recover and try again, and give up with an error
 // after ten rounds, leaving the face without elements (a hole). Where the
-// curve bounds a sliver thinner than the mesh size (a lens a twentieth of
-// the size wide between a flat spot and the face around it), its segments
-// in (u, v) stay too close to recover at any split. The safety net then
+// face is a concave sliver thinner than the mesh size, the chords of its
+// curves' segments cross its other side in (u, v), and splitting them (down
+// to 1e-9 of the diagonal on cad_robot_link_irb6640) does not help. The
+// safety net then
 // meshes the face with its input triangles stitched to its curves, with one
 // warning naming it (hook in meshGFace.cpp's recoverEdge, patches/0008).
 
