@@ -6,10 +6,9 @@
 // after ten rounds, leaving the face without elements (a hole). Where the
 // face is a concave sliver thinner than the mesh size, the chords of its
 // curves' segments cross its other side in (u, v), and splitting them (down
-// to 1e-9 of the diagonal on cad_robot_link_irb6640) does not help. The
-// safety net then
-// meshes the face with its input triangles stitched to its curves, with one
-// warning naming it (hook in meshGFace.cpp's recoverEdge, patches/0008).
+// to 1e-9 of the diagonal, bench/README.md) does not help. The safety net
+// then meshes the face with its input triangles stitched to its curves, with
+// one warning naming it (hook in meshGFace.cpp's recoverEdge, patches/0008).
 
 #ifndef REPARAM_LOST_SEGMENTS_H
 #define REPARAM_LOST_SEGMENTS_H
