@@ -1,5 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include "GEdge.h"
@@ -70,6 +71,19 @@ namespace {
     return count ? sum / count : 0.;
   }
 
+  // How many sides of faces a curve has: a face on both sides of it counts
+  // twice (Gmsh's classification leaves such a curve inside a face along a
+  // fin, a triangle standing on an inner edge, that then has three sides)
+  std::size_t curveSides(GEdge *ge)
+  {
+    std::size_t sides = 0;
+    for(GFace *gf : ge->faces()) {
+      const std::vector<GEdge *> &edges = gf->edges();
+      sides += std::count(edges.begin(), edges.end(), ge);
+    }
+    return sides;
+  }
+
 } // namespace
 
 std::set<GEdge *> reparamNoiseFaceCurves(GModel *m)
@@ -86,7 +100,7 @@ std::set<GEdge *> reparamNoiseFaceCurves(GModel *m)
     if(!(width < 0.25 * size)) continue;
     for(GEdge *ge : gf->edges()) {
       const std::vector<GFace *> sides = ge->faces();
-      if(sides.size() == 2 && sides[0] != sides[1] &&
+      if(sides.size() == 2 && sides[0] != sides[1] && curveSides(ge) == 2 &&
          reparamOptimizableFace(sides[0]) && reparamOptimizableFace(sides[1]))
         curves.insert(ge);
     }

@@ -36,7 +36,8 @@ double triangulationWidth(const surfaceMesh &mesh);
 // The curves between two faces the optimizers may change of which one is
 // noise at the scale of its mesh: narrower (triangulationWidth of its
 // input) than a quarter of the mean edge of the meshes of the faces it
-// shares a curve with; logged
+// shares a curve with; logged. A curve with a third side (a face on both
+// sides of it and a fin on it) is non-manifold and never crossed
 std::set<GEdge *> reparamNoiseFaceCurves(GModel *m);
 
 } // namespace reparam

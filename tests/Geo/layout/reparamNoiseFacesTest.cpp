@@ -107,3 +107,48 @@ TEST(noiseFaces, aStripWiderThanThatKeepsItsCurves)
   EXPECT_FALSE(logHas(log, "narrower than a quarter of the mesh size"));
   EXPECT_TRUE(reparamNoiseFaceCurves(GModel::current()).empty());
 }
+
+TEST(noiseFaces, aFinOnAnInnerEdgeStaysAFin)
+{
+  // a unit square on a grid of 0.05 with one triangle standing on an inner
+  // edge (a fin, as photogrammetry leaves): the edge is used three times,
+  // and the fin's curve along it has one face on both sides and the fin on
+  // a third; the fin is noise at 0.25 but the optimization must not take
+  // its curves as crossed (it folded the fin into the plate: its two free
+  // edges, a boundary of the input, gone)
+  testTriangulation t = rectangleGrid(20, 20, 1., 1.);
+  const int a = 10 * 21 + 10, b = a + 1; // the edge (0.5, 0.5)-(0.55, 0.5)
+  t.points.push_back(SPoint3(0.525, 0.5, 0.02));
+  t.triangles.push_back({a, b, (int)t.points.size() - 1});
+  const std::vector<std::string> log = remeshWithRecipe(t, 0.25);
+  EXPECT_FALSE(logHas(log, "Error"));
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  // the fin's free edges stay free edges off the square's sides
+  std::size_t nonManifold = 0, inner = 0;
+  std::vector<double> coord, param;
+  for(const auto &e : freeMeshEdges(&nonManifold)) {
+    bool onSide = false;
+    for(std::size_t tag : {e.first, e.second}) {
+      gmsh::model::mesh::getNode(tag, coord, param);
+      onSide = onSide || std::fabs(coord[0] - 0.5) > 0.49 ||
+               std::fabs(coord[1] - 0.5) > 0.49;
+    }
+    if(!onSide) inner++;
+  }
+  EXPECT_GE(inner, 2u);
+  EXPECT_GE(nonManifold, 1u);
+  // and in its plane: no triangle of the plate folded up onto it
+  std::size_t offPlane = 0;
+  for(GFace *gf : GModel::current()->getFaces())
+    for(MTriangle *tr : gf->triangles) {
+      bool up = false, off = false;
+      for(int k = 0; k < 3; k++) {
+        up = up || tr->getVertex(k)->z() > 1e-9;
+        off = off || std::fabs(tr->getVertex(k)->y() - 0.5) > 1e-9;
+      }
+      if(up && off) offPlane++;
+    }
+  EXPECT_EQ(offPlane, 0u);
+  // its curve along the inner edge has three sides: never crossed
+  EXPECT_TRUE(reparamNoiseFaceCurves(GModel::current()).empty());
+}
