@@ -206,7 +206,7 @@ namespace {
       check.reason = s;
     }
     else if(!reparamHolesFillable(triangles))
-      check.reason = "a hole of it cannot be filled on its mean plane";
+      check.reason = "a hole of it cannot be filled";
     else
       return false;
     check.ok = false;

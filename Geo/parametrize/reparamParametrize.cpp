@@ -321,10 +321,10 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
   }
   else if(done > 0 && getReparamOptions().fillHoles &&
           record.filledHoles < record.holes) {
-    // a loop that cannot be filled on its mean plane winds around a tube:
+    // a loop that cannot be filled winds around a tube:
     // left free, it leaves a conformal map badly squeezed, and a cut across
     // the tube removes it (bench/README.md, Patch layout)
-    why = "a hole of it cannot be filled on its mean plane";
+    why = "a hole of it cannot be filled";
     done = -1;
   }
   else if(done <= 0)

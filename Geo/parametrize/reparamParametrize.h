@@ -32,7 +32,7 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::string &why);
 
 // Whether every hole of these triangles (inner boundary loop) can be
-// filled on its mean plane, as the parametrization fills them
+// filled (Mesh/maps/holeFilling.h), as the parametrization fills them
 // (Mesh.CompoundFillHoles; true without it, or without holes): false means
 // reparamTryParametrization fails for that reason, whatever its maps give
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles);

@@ -71,7 +71,7 @@ struct parametrization {
 parametrization parametrize(const discretePatch &patch,
                             const parametrizeOptions &o);
 
-// Whether every hole of `patch` can be filled on its mean plane, as
+// Whether every hole of `patch` can be filled (triangulateHole), as
 // parametrize fills them (true without holes)
 bool holesFillable(const discretePatch &patch);
 

@@ -1,10 +1,12 @@
 // Reparam - holes filled on their mean plane before mapping
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
+#include "SVector3.h"
 #include "holeFilling.h"
 #include "mapDistortion.h"
 #include "meanValueMap.h"
@@ -169,4 +171,129 @@ TEST(holeFilling, noRemeshNodeInsideAHole)
     EXPECT_EQ(inside, 0) << "map " << map;
   }
   gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+}
+
+namespace {
+
+  // A unit square on an n x n grid without the cells [ia, ib) x [ja, jb):
+  // a rectangular hole whose sides carry nodes in a line
+  testTriangulation squareWithRectangularHole(int ia, int ib, int ja, int jb,
+                                              int n = 10)
+  {
+    testTriangulation grid = rectangleGrid(n, n, 1., 1.), t;
+    std::vector<int> index(grid.points.size(), -1);
+    for(std::size_t k = 0; k < grid.triangles.size(); k++) {
+      const int cell = (int)k / 2, i = cell % n, j = cell / n;
+      if(i >= ia && i < ib && j >= ja && j < jb) continue;
+      std::array<int, 3> tri = grid.triangles[k];
+      for(int &n : tri) {
+        if(index[n] < 0) {
+          index[n] = (int)t.points.size();
+          t.points.push_back(grid.points[n]);
+        }
+        n = index[n];
+      }
+      t.triangles.push_back(tri);
+    }
+    return t;
+  }
+
+  int innerLoop(const discretePatch &p) { return p.outerLoop == 0 ? 1 : 0; }
+
+} // namespace
+
+TEST(holeFilling, aRectangularHoleWithNodesAlongItsSidesIsFilled)
+{
+  // 4 x 2 cells: 12 nodes, 4 corners. Ear clipping used to cut off the last
+  // corner with the others' nodes on the diagonal and be left with the
+  // nodes of one side in a line (a CAD panel's window, refused level after
+  // level)
+  for(const std::array<int, 4> &cells :
+      {std::array<int, 4>{{3, 7, 4, 6}}, std::array<int, 4>{{2, 8, 3, 5}},
+       std::array<int, 4>{{4, 5, 2, 8}}}) {
+    discretePatch p = makePatchOrDie(
+      squareWithRectangularHole(cells[0], cells[1], cells[2], cells[3]));
+    ASSERT_EQ(p.boundaryLoops.size(), 2u);
+    std::vector<std::array<int, 3> > tris;
+    ASSERT_TRUE(triangulateHole(p, innerLoop(p), tris));
+    const std::size_t m = p.boundaryLoops[innerLoop(p)].size();
+    EXPECT_EQ(tris.size(), m - 2);
+    // on the square's plane, Delaunay: no angle under that of a cell and a
+    // half (26.6 degrees), where a fan from one corner has 9.5 degrees
+    double smallest = M_PI;
+    for(const auto &t : tris)
+      for(int k = 0; k < 3; k++) {
+        const SVector3 u(p.points[t[k]], p.points[t[(k + 1) % 3]]),
+          v(p.points[t[k]], p.points[t[(k + 2) % 3]]);
+        smallest = std::min(smallest, angle(u, v));
+      }
+    EXPECT_GT(smallest * 180. / M_PI, 26.);
+    discretePatch extended = filledPatch(p, {tris, 1, 0});
+    EXPECT_EQ(extended.boundaryLoops.size(), 1u);
+  }
+}
+
+TEST(holeFilling, aHoleWhoseRimFoldsOverIsFilledInSpace)
+{
+  // the rectangular hole of 4 x 2 cells with one long side's middle node
+  // pulled across the hole and up: its rim crosses itself seen from the
+  // mean plane, and from the plane the square faces. Filled all the same,
+  // with the least area triangulation in space
+  testTriangulation t = squareWithRectangularHole(3, 7, 4, 6);
+  for(SPoint3 &q : t.points) // (0.5, 0.4), on the bottom side
+    if(std::fabs(q.x() - 0.5) < 1e-9 && std::fabs(q.y() - 0.4) < 1e-9)
+      q = SPoint3(0.5, 0.65, 0.08);
+  discretePatch p = makePatchOrDie(t);
+  ASSERT_EQ(p.boundaryLoops.size(), 2u);
+  std::vector<std::array<int, 3> > tris;
+  ASSERT_TRUE(triangulateHole(p, innerLoop(p), tris));
+  EXPECT_EQ(tris.size(), p.boundaryLoops[innerLoop(p)].size() - 2);
+  discretePatch extended = filledPatch(p, {tris, 1, 0});
+  EXPECT_EQ(extended.boundaryLoops.size(), 1u);
+  EXPECT_EQ(extended.genus(), 0);
+}
+
+TEST(holeFilling, theEndOfATubeIsNotFilledInSpace)
+{
+  // a tube whose end's rim doubles back around the axis (its nodes' angle
+  // warped by 0.6 sin 3a): the rim crosses itself on its mean plane, and
+  // the triangles around face every way. A filling in space would close
+  // the tube into a sock, that no conformal map spreads: the layout cuts
+  // across the tube instead
+  const int around = 36, along = 6;
+  testTriangulation t = rectangleGrid(around, along, 2. * M_PI, 2.);
+  for(SPoint3 &q : t.points) {
+    const bool end = q.y() > 2. - 1e-12;
+    const double a = end ? q.x() + 0.6 * std::sin(3. * q.x()) : q.x();
+    q = SPoint3(std::cos(a), std::sin(a), q.y());
+  }
+  const testTriangulation tube = weld(t, 1e-9);
+  discretePatch p = makePatchOrDie(tube);
+  ASSERT_EQ(p.boundaryLoops.size(), 2u);
+  std::vector<std::array<int, 3> > tris;
+  for(int loop = 0; loop < 2; loop++) {
+    tris.clear();
+    const bool endRim = p.points[p.boundaryLoops[loop][0]].z() > 1.;
+    if(endRim) EXPECT_FALSE(triangulateHole(p, loop, tris));
+    // the other end is a circle: filled on its mean plane, as before
+    else
+      EXPECT_TRUE(triangulateHole(p, loop, tris));
+  }
+}
+
+TEST(holeFilling, aHoleThatDwarfsThePatchIsLeftFree)
+{
+  // a frame one cell wide around a square hole: on a 10 x 10 grid the hole
+  // is 1.8 times the frame's area and filled; on a 60 x 60 grid 14.2 times,
+  // and left free (filled, the frame's map is a band along the disk's edge)
+  discretePatch wide = makePatchOrDie(squareWithRectangularHole(1, 9, 1, 9));
+  EXPECT_EQ(fillHoles(wide).filledHoles, 1);
+  discretePatch thin =
+    makePatchOrDie(squareWithRectangularHole(1, 59, 1, 59, 60));
+  const holeFilling f = fillHoles(thin);
+  EXPECT_EQ(f.filledHoles, 0);
+  EXPECT_EQ(f.skippedHoles, 1);
+  EXPECT_TRUE(f.triangles.empty());
+  std::vector<std::array<int, 3> > tris;
+  EXPECT_TRUE(triangulateHole(thin, innerLoop(thin), tris));
 }
