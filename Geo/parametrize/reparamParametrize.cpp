@@ -124,7 +124,7 @@ namespace {
   {
     if(m.skippedHoles)
       Msg::Warning("Triangulation (%lu triangles): %d of its %lu holes cannot "
-                   "be filled on their mean plane, left as free boundaries",
+                   "be filled, left as free boundaries",
                    numTriangles, m.skippedHoles, m.holes);
     if(!m.fillError.ok())
       Msg::Warning("Triangulation (%lu triangles): filling its holes gives "
