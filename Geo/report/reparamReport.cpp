@@ -16,7 +16,9 @@
 #include "OS.h"
 #include "reparamHooks.h"
 #include "reparamInputMesh.h"
+#include "reparamNoiseFaces.h"
 #include "reparamOptions.h"
+#include "reparamSizeGrading.h"
 #include "reparamReport.h"
 #include "reparamState.h"
 #include "reparamSurfaceMesh.h"
@@ -210,6 +212,23 @@ namespace {
     return std::unique_ptr<meshFidelity>(new meshFidelity(whole));
   }
 
+  // The faces whose input is narrower (twice its area over its boundary's
+  // length) than a quarter of the mesh size asked at its middle: no inner
+  // node fits, their triangles are as thin as the face (the kappa of a
+  // triangle across a strip of a quarter of its edge is 0.53 at best)
+  std::set<int> narrowFaces(GModel *m, const std::vector<faceReport> &reports)
+  {
+    std::set<int> narrow;
+    for(const faceReport &r : reports) {
+      GFace *gf = m->getFaceByTag(r.tag);
+      if(!gf || !r.hasInput || r.input.points.empty()) continue;
+      const SPoint3 middle = r.inputBox.center();
+      const double size = reparamUngradedMeshSize(gf, middle);
+      if(triangulationWidth(r.input) < 0.25 * size) narrow.insert(r.tag);
+    }
+    return narrow;
+  }
+
 } // namespace
 
 } // namespace reparam
@@ -260,6 +279,9 @@ void reparamReportMeshedModel(GModel *m)
       Msg::Info("Reparam: %s", line.c_str());
   const std::string poor = poorTrianglesLine(reports);
   if(!poor.empty()) Msg::Info("Reparam: %s", poor.c_str());
+  const std::set<int> narrow = narrowFaces(m, reports);
+  const std::string narrowLine = narrowFacesLine(reports, narrow);
+  if(!narrowLine.empty()) Msg::Info("Reparam: %s", narrowLine.c_str());
   const std::string optimization = optimizationLine(reports);
   if(!optimization.empty()) Msg::Info("Reparam: %s", optimization.c_str());
   const std::string farthest = farthestPointLine(reports, whole.get());

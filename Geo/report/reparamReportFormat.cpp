@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include "reparamOptions.h"
 #include "reparamReport.h"
 
@@ -300,6 +301,40 @@ std::string poorTrianglesLine(const std::vector<faceReport> &reports)
             poorTriangleCauseName((poorTriangleCause)c);
     first = false;
   }
+  return line;
+}
+
+std::string narrowFacesLine(const std::vector<faceReport> &reports,
+                            const std::set<int> &narrow)
+{
+  std::size_t inside = 0, outside = 0, faces = 0;
+  double kappaInside = 0., kappaOutside = 0.;
+  std::string tags;
+  for(const faceReport &r : reports) {
+    const faceQuality &q = r.quality;
+    if(!q.triangles) continue;
+    if(!narrow.count(r.tag)) {
+      outside += q.triangles;
+      kappaOutside += q.kappaMean * q.triangles;
+      continue;
+    }
+    inside += q.triangles;
+    kappaInside += q.kappaMean * q.triangles;
+    if(faces++ < 8)
+      tags += (tags.empty() ? "" : ", ") + std::to_string(r.tag);
+    else if(faces == 9)
+      tags += ", ...";
+  }
+  if(!inside || !outside) return "";
+  char line[512];
+  snprintf(line, sizeof(line),
+           "kappa mean %.3g: %.3g on the %lu surface%s narrower than a "
+           "quarter of the size asked (%s; %lu triangles), %.3g on "
+           "the others",
+           (kappaInside + kappaOutside) / (inside + outside),
+           kappaInside / inside, faces, faces > 1 ? "s" : "", tags.c_str(),
+           inside,
+           kappaOutside / outside);
   return line;
 }
 

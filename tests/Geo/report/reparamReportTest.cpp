@@ -310,3 +310,19 @@ TEST(reparamReport, surfaceKeptAsItsInputIsNamed)
   EXPECT_TRUE(
     has(reportJson({}, {}, nullptr, {3}), "\"inputKeptSurfaces\": [3]"));
 }
+
+TEST(reparamReport, narrowFacesAreNamedWithTheirKappaMean)
+{
+  std::vector<faceReport> reports = {
+    face(1, {3}, 300, 0.5, 0.96, 450, 90., SPoint3(1, 0, 0), 0.1, 0.01, 0),
+    face(2, {3}, 100, 0.2, 0.6, 150, 60., SPoint3(1, 0, 0), 0.1, 0.01, 0),
+    face(3, {3}, 0, 0., 0., 0, 0., SPoint3(1, 0, 0), 0.1, 0.01, 0)};
+  // none narrow, or all of them: nothing to compare
+  EXPECT_EQ(narrowFacesLine(reports, {}), "");
+  EXPECT_EQ(narrowFacesLine(reports, {1, 2}), "");
+  // the mean weighted by the triangles: (300 * 0.96 + 100 * 0.6) / 400;
+  // a narrow face left without triangles is not counted
+  EXPECT_EQ(narrowFacesLine(reports, {2, 3}),
+            "kappa mean 0.87: 0.6 on the 1 surface narrower than a quarter "
+            "of the size asked (2; 100 triangles), 0.96 on the others");
+}
