@@ -18,8 +18,8 @@
 #include "reparamInputMesh.h"
 #include "reparamNoiseFaces.h"
 #include "reparamOptions.h"
-#include "reparamSizeGrading.h"
 #include "reparamReport.h"
+#include "reparamSizeGrading.h"
 #include "reparamState.h"
 #include "reparamSurfaceMesh.h"
 

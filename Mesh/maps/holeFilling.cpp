@@ -294,25 +294,27 @@ bool triangulateHole(const discretePatch &patch, int loop,
   if(m < 3) return false;
   std::map<int, int> local;
   for(std::size_t i = 0; i < m; i++) local[poly[i]] = (int)i;
-  // On its mean plane first; a hole of a scan whose rim winds up and down
-  // projects there onto a polygon that crosses itself, but onto a simple one
-  // along the way the surface around it faces
-  for(const SVector3 &normal :
-      {newellNormal(patch, poly), surroundingNormal(patch, poly)}) {
-    if(!(normal.norm() > 0.)) continue;
+  auto onPlane = [&](const SVector3 &normal) {
+    if(!(normal.norm() > 0.)) return false;
     const std::vector<std::array<double, 2> > q =
       projected(patch, poly, normal);
     std::vector<std::array<int, 3> > tris;
-    if(!clipEars(patch, poly, q, tris)) continue;
+    if(!clipEars(patch, poly, q, tris)) return false;
     delaunayFlips(patch, q, local, tris);
     triangles.insert(triangles.end(), tris.begin(), tris.end());
     return true;
-  }
-  // else, where the surface around faces one way, in space
+  };
+  // On its mean plane first; a hole of a scan whose rim winds up and down
+  // projects there onto a polygon that crosses itself, but onto a simple one
+  // along the way the surface around it faces (a pass over the patch's
+  // triangles, only for the holes the mean plane does not take)
+  if(onPlane(newellNormal(patch, poly))) return true;
+  const SVector3 around = surroundingNormal(patch, poly);
+  if(!(around.norm() > 0.)) return false; // the end of a tube
+  if(onPlane(around)) return true;
+  // else in space
   std::vector<std::array<int, 3> > tris;
-  if(!(surroundingNormal(patch, poly).norm() > 0.) ||
-     !leastAreaTriangulation(patch, poly, tris))
-    return false;
+  if(!leastAreaTriangulation(patch, poly, tris)) return false;
   triangles.insert(triangles.end(), tris.begin(), tris.end());
   return true;
 }

@@ -37,10 +37,11 @@ struct holeFilling {
 bool triangulateHole(const discretePatch &patch, int loop,
                      std::vector<std::array<int, 3> > &triangles);
 
-// A hole whose filling has more than this times the patch's own area is
-// left free: the patch is a thin frame around it, that a conformal map of
-// the filled patch squeezes into a band along the disk's edge
-// (bench/README.md, Maps and solvers)
+// A hole whose filling has more than this times the patch's own area is not
+// filled (counted as skipped, so that the layout cuts the patch): the patch
+// is a thin frame around it, that a conformal map of the filled patch
+// squeezes into a band along the disk's edge (bench/README.md, Maps and
+// solvers)
 const double maxHoleToPatchArea = 10.;
 
 // All inner loops (every loop but patch.outerLoop) that triangulateHole
