@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <string>
 #include <vector>
+#include "Context.h"
 #include "GModel.h"
 #include "MLine.h"
 #include "MTriangle.h"
@@ -29,6 +30,7 @@
 #include "bijectivityCheck.h"
 #include "discretePatch.h"
 #include "gmsh.h"
+#include "planeProjection.h"
 
 using namespace reparam;
 
@@ -37,7 +39,9 @@ struct bijectivityCount {
 };
 
 // Flips and folds of a parametrization as Gmsh gets it (any map, also
-// Gmsh's own), with Reparam's exact checks
+// Gmsh's own), with Reparam's exact checks; of a planar patch, the
+// projection Gmsh takes instead, its flips and folds within Gmsh's planar
+// tolerance the input's own rounding (Mesh/maps/planeProjection.h)
 static bijectivityCount countNonBijective(const std::vector<SPoint3> &xyz,
                                           const std::vector<int> &tri,
                                           const std::vector<SPoint2> &uv)
@@ -52,6 +56,13 @@ static bijectivityCount countNonBijective(const std::vector<SPoint3> &xyz,
   for(std::size_t i = 0; i < uv.size(); i++) {
     flat[2 * i] = uv[i].x();
     flat[2 * i + 1] = uv[i].y();
+  }
+  const double tolerance = CTX::instance()->geom.matchMeshTolerance;
+  if(patchIsPlanar(patch, tolerance)) {
+    const mapAttempt &a = planeProjection(patch, tolerance).attempts[0];
+    c.flipped = a.flipped;
+    c.folds = a.folds;
+    return c;
   }
   bijectivityReport r = checkBijectivity(patch, flat);
   c.flipped = r.flippedTriangles.size();

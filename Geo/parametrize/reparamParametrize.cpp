@@ -10,6 +10,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <string>
+#include "Context.h"
 #include "GEntity.h"
 #include "GFace.h"
 #include "MTriangle.h"
@@ -18,6 +19,7 @@
 #include "GmshMessage.h"
 #include "OS.h"
 #include "parametrize.h"
+#include "planeProjection.h"
 #include "reparamConePoints.h"
 #include "reparamCreaseCurves.h"
 #include "reparamHooks.h"
@@ -155,6 +157,13 @@ namespace {
               surface.c_str(), m.result.map.error.what().c_str());
       return false;
     }
+    if(m.outcome == parametrizeOutcome::noBijectiveMap &&
+       m.chosen().map == (int)compoundParametrization::plane) {
+      failure(r, "No one-to-one parametrization of %s: it is planar, and "
+              "its projection on its plane, which Gmsh meshes, folds over",
+              surface.c_str());
+      return false;
+    }
     if(m.outcome == parametrizeOutcome::noBijectiveMap) {
       failure(r, "No one-to-one parametrization of %s: every map of the "
               "automatic chain flips or folds", surface.c_str());
@@ -176,7 +185,10 @@ namespace {
         "= 6 tries the maps in turn",
         compoundParametrizationName(choice), surface.c_str(),
         chosen.flippedAfter, chosen.foldsAfter);
-    else if(chosen.degenerateAfter)
+    // a plane projection's degenerate images are the input's own slivers,
+    // which Gmsh's planar face meshes over
+    else if(chosen.degenerateAfter &&
+            chosen.map != (int)compoundParametrization::plane)
       Msg::Warning("%s map of %s: %lu triangles have a numerically degenerate "
                    "image",
                    compoundParametrizationName(chosen.map), surface.c_str(),
@@ -274,6 +286,8 @@ namespace {
     o.map = options.parametrization;
     o.fillHoles = options.fillHoles;
     o.repair = options.repair;
+    // what Gmsh's discrete faces take for planar (discreteFace.cpp)
+    o.planeTolerance = CTX::instance()->geom.matchMeshTolerance;
     // the maps the layout verified its parts with: CreateGeometry
     // parametrizes the same parts again (a 1.4M-triangle scan: a tenth of
     // its run, bench/README.md)
@@ -320,6 +334,7 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
     done = -1;
   }
   else if(done > 0 && getReparamOptions().fillHoles &&
+          record.map != (int)compoundParametrization::plane &&
           record.filledHoles < record.holes) {
     // a loop that cannot be filled winds around a tube:
     // left free, it leaves a conformal map badly squeezed, and a cut across
@@ -343,8 +358,11 @@ bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
 {
   if(!getReparamOptions().fillHoles) return true;
   const trianglePatch p = patchOfTriangles(triangles);
-  // an invalid patch is the maps' failure to tell
-  return !p.error.ok() || holesFillable(p.patch);
+  // an invalid patch is the maps' failure to tell; a planar one is meshed
+  // on its plane with its holes
+  return !p.error.ok() ||
+         patchIsPlanar(p.patch, CTX::instance()->geom.matchMeshTolerance) ||
+         holesFillable(p.patch);
 }
 
 } // namespace reparam

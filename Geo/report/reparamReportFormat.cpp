@@ -24,6 +24,7 @@ namespace {
     case 3: return "MV";
     case 4: return "LSCM";
     case 5: return "spectral";
+    case 7: return "plane";
     }
     return "?";
   }

@@ -99,8 +99,36 @@ namespace {
 
 } // namespace
 
+namespace {
+
+  double pointSegmentDistance(const double *p, const double *a,
+                              const double *b)
+  {
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const double l2 = dx * dx + dy * dy;
+    double s = l2 > 0. ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2 : 0.;
+    s = std::min(1., std::max(0., s));
+    return std::hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy);
+  }
+
+  // Whether a node of edge e lies within `within` of edge f, or one of f's
+  // of e
+  bool nodesWithin(const std::vector<double> &uv, const std::array<int, 2> &e,
+                   const std::array<int, 2> &f, double within)
+  {
+    for(int k = 0; k < 2; k++)
+      if(pointSegmentDistance(&uv[2 * e[k]], &uv[2 * f[0]], &uv[2 * f[1]]) <=
+           within ||
+         pointSegmentDistance(&uv[2 * f[k]], &uv[2 * e[0]], &uv[2 * e[1]]) <=
+           within)
+        return true;
+    return false;
+  }
+
+} // namespace
+
 std::size_t countBoundaryFolds(const discretePatch &patch,
-                               const std::vector<double> &uv)
+                               const std::vector<double> &uv, double within)
 {
   boundaryEdges all{uv, {}, {}, {}};
   for(const auto &loop : patch.boundaryLoops)
@@ -130,7 +158,8 @@ std::size_t countBoundaryFolds(const discretePatch &patch,
     const auto &e = all.nodes[pr.first], &f = all.nodes[pr.second];
     if(e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1]) continue;
     if(segmentsIntersect(&uv[2 * e[0]], &uv[2 * e[1]], &uv[2 * f[0]],
-                         &uv[2 * f[1]]))
+                         &uv[2 * f[1]]) &&
+       !(within > 0. && nodesWithin(uv, e, f, within)))
       folds++;
   }
   return folds;

@@ -40,9 +40,12 @@ double orientation2d(const double *a, const double *b, const double *c);
 
 // Number of pairs of edges of the patch's boundary loops (all of them) that
 // intersect in uv without sharing a node. Edges are binned in a uniform grid
-// (expected linear time), each candidate pair tested exactly.
+// (expected linear time), each candidate pair tested exactly. With `within`
+// > 0, a pair where a node of one edge lies within that uv distance of the
+// other is not counted (a crossing of the input's own rounding).
 std::size_t countBoundaryFolds(const discretePatch &patch,
-                               const std::vector<double> &uv);
+                               const std::vector<double> &uv,
+                               double within = 0.);
 
 const double defaultDegenerateRatio = 1e-12;
 

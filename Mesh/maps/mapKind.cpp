@@ -14,6 +14,7 @@ const char *compoundParametrizationName(int value)
   case 4: return "finite element conformal (LSCM)";
   case 5: return "spectral conformal";
   case 6: return "automatic";
+  case 7: return "plane projection";
   }
   return "unknown";
 }

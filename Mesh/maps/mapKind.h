@@ -9,7 +9,8 @@
 
 namespace reparam {
 
-// Values of Mesh.CompoundParametrization
+// Values of Mesh.CompoundParametrization; `plane` is none: the projection a
+// planar patch gets whatever the option (planeProjection.h)
 enum class compoundParametrization {
   gmsh = 0, // Gmsh's own code (the reference)
   harmonic = 1,
@@ -17,10 +18,12 @@ enum class compoundParametrization {
   meanValue = 3,
   conformal = 4,
   spectral = 5,
-  automatic = 6
+  automatic = 6,
+  plane = 7
 };
 
-// "mean value", "spectral conformal"...; "unknown" outside 0..6
+// "mean value", "spectral conformal"...; "plane projection" for 7,
+// "unknown" outside 0..7
 const char *compoundParametrizationName(int value);
 
 } // namespace reparam

@@ -4,6 +4,7 @@
 #include "mapCache.h"
 #include "mapKind.h"
 #include "parametrize.h"
+#include "planeProjection.h"
 #include "stageTimer.h"
 
 namespace reparam {
@@ -75,6 +76,13 @@ parametrization parametrize(const discretePatch &patch,
                             const parametrizeOptions &o)
 {
   parametrization p;
+  if(patchIsPlanar(patch, o.planeTolerance)) {
+    // meshed on its plane with its holes: none filled
+    p.holes = patch.boundaryLoops.size() - 1;
+    p.result = planeProjection(patch, o.planeTolerance);
+    if(!p.result.bijective) p.outcome = parametrizeOutcome::noBijectiveMap;
+    return p;
+  }
   const double t0 = wallSeconds();
   discretePatch extended;
   const discretePatch &mapped = mappedPatch(patch, o, extended, p);

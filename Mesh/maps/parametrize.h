@@ -31,6 +31,11 @@ struct parametrizeOptions {
   // here; with keepInCache, the map computed is kept here instead
   mapCache *cache = nullptr;
   bool keepInCache = false;
+  // A patch whose nodes lie within this share of its diagonal of their
+  // mean plane is mapped by its projection on it, whatever `map` asks, its
+  // holes left free (planeProjection.h; Geometry.MatchMeshTolerance, what
+  // Gmsh's discrete faces take; 0: never)
+  double planeTolerance = 0.;
 };
 
 enum class parametrizeOutcome {
@@ -66,7 +71,8 @@ struct parametrization {
   }
 };
 
-// Parametrizes `patch` (built by makeDiscretePatch, valid) by o.map.
+// Parametrizes `patch` (built by makeDiscretePatch, valid) by o.map, or by
+// its projection on its plane when planar (o.planeTolerance).
 // result.map.uv has 2 values per node of `patch`.
 parametrization parametrize(const discretePatch &patch,
                             const parametrizeOptions &o);

@@ -88,6 +88,28 @@ TEST(bijectivity, foldsOfBoundaryLoops)
   EXPECT_EQ(countBoundaryFolds(wound, uv), 1u);
 }
 
+TEST(bijectivity, foldsWithinADistanceAreNotCounted)
+{
+  // a square whose bottom side doubles back by `back` at its middle: edges
+  // 1-2 and 3-4 cross, node 3 at `back` from edge 1-2
+  for(double back : {1e-9, 1e-3}) {
+    std::vector<double> uv;
+    const discretePatch p =
+      loopPatch({{{0, 0}},
+                 {{0.5 + back, 0}},
+                 {{0.5 + back, 2 * back}},
+                 {{0.5, 2 * back}},
+                 {{0.5 - back, -back}},
+                 {{1, 0}},
+                 {{1, 1}},
+                 {{0, 1}}},
+                uv);
+    SCOPED_TRACE(back);
+    EXPECT_GE(countBoundaryFolds(p, uv), 1u);
+    EXPECT_EQ(countBoundaryFolds(p, uv, 1e-6), back < 1e-6 ? 0u : 1u);
+  }
+}
+
 TEST(bijectivity, foldsOfALoopMostlyCrushedToAPoint)
 {
   // 19990 nodes on an arc of radius 1e-9, closed by 10 nodes at radius 1:

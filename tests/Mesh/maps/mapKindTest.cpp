@@ -22,6 +22,7 @@ TEST(mapKind, namesForTheLog)
   EXPECT_EQ(std::string(compoundParametrizationName(4)),
             "finite element conformal (LSCM)");
   EXPECT_EQ(std::string(compoundParametrizationName(6)), "automatic");
-  EXPECT_EQ(std::string(compoundParametrizationName(7)), "unknown");
+  EXPECT_EQ(std::string(compoundParametrizationName(7)), "plane projection");
+  EXPECT_EQ(std::string(compoundParametrizationName(8)), "unknown");
   EXPECT_EQ(std::string(compoundParametrizationName(-1)), "unknown");
 }
