@@ -39,9 +39,9 @@ struct bijectivityCount {
 };
 
 // Flips and folds of a parametrization as Gmsh gets it (any map, also
-// Gmsh's own), with Reparam's exact checks; of a planar patch, the
-// projection Gmsh takes instead, its flips and folds within Gmsh's planar
-// tolerance the input's own rounding (Mesh/maps/planeProjection.h)
+// Gmsh's own), with Reparam's exact checks; a planar patch whose projection
+// is one-to-one up to the input's own rounding (Gmsh's planar tolerance) is
+// one-to-one (Mesh/maps/planeProjection.h: the map Reparam gives it)
 static bijectivityCount countNonBijective(const std::vector<SPoint3> &xyz,
                                           const std::vector<int> &tri,
                                           const std::vector<SPoint2> &uv)
@@ -59,10 +59,7 @@ static bijectivityCount countNonBijective(const std::vector<SPoint3> &xyz,
   }
   const double tolerance = CTX::instance()->geom.matchMeshTolerance;
   if(patchIsPlanar(patch, tolerance)) {
-    const mapAttempt &a = planeProjection(patch, tolerance).attempts[0];
-    c.flipped = a.flipped;
-    c.folds = a.folds;
-    return c;
+    if(planeProjection(patch, tolerance).bijective) return c;
   }
   bijectivityReport r = checkBijectivity(patch, flat);
   c.flipped = r.flippedTriangles.size();

@@ -157,13 +157,6 @@ namespace {
               surface.c_str(), m.result.map.error.what().c_str());
       return false;
     }
-    if(m.outcome == parametrizeOutcome::noBijectiveMap &&
-       m.chosen().map == (int)compoundParametrization::plane) {
-      failure(r, "No one-to-one parametrization of %s: it is planar, and "
-              "its projection on its plane, which Gmsh meshes, folds over",
-              surface.c_str());
-      return false;
-    }
     if(m.outcome == parametrizeOutcome::noBijectiveMap) {
       failure(r, "No one-to-one parametrization of %s: every map of the "
               "automatic chain flips or folds", surface.c_str());
@@ -358,10 +351,12 @@ bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
 {
   if(!getReparamOptions().fillHoles) return true;
   const trianglePatch p = patchOfTriangles(triangles);
-  // an invalid patch is the maps' failure to tell; a planar one is meshed
-  // on its plane with its holes
+  // an invalid patch is the maps' failure to tell; a planar one whose
+  // projection is one-to-one is meshed on its plane with its holes
+  const double planar = CTX::instance()->geom.matchMeshTolerance;
   return !p.error.ok() ||
-         patchIsPlanar(p.patch, CTX::instance()->geom.matchMeshTolerance) ||
+         (patchIsPlanar(p.patch, planar) &&
+          planeProjection(p.patch, planar).bijective) ||
          holesFillable(p.patch);
 }
 

@@ -70,42 +70,61 @@ namespace {
     result.bijective = true;
   }
 
+  // The holes filled, then o.map or the chain
+  parametrization parametrizeByMaps(const discretePatch &patch,
+                                    const parametrizeOptions &o)
+  {
+    parametrization p;
+    const double t0 = wallSeconds();
+    discretePatch extended;
+    const discretePatch &mapped = mappedPatch(patch, o, extended, p);
+    p.fillTime = wallSeconds() - t0;
+
+    const std::vector<mapStep> steps = mapChain(o.map);
+    if(steps.empty()) {
+      p.outcome = parametrizeOutcome::notImplemented;
+      return p;
+    }
+    p.result = chainOf(mapped, o, steps, p.fromCache);
+    if(p.result.chosen < 0) {
+      p.outcome = parametrizeOutcome::mapFailed;
+      return p;
+    }
+    if(!p.result.bijective &&
+       o.map != (int)compoundParametrization::automatic &&
+       o.map != (int)compoundParametrization::meanValue)
+      fallBackToMeanValue(mapped, o, p);
+    // Never a folded or flipped map to the planar mesher in automatic mode;
+    // a map chosen by hand is kept as it is, the caller warns
+    if(!p.result.bijective && o.map == (int)compoundParametrization::automatic)
+      p.outcome = parametrizeOutcome::noBijectiveMap;
+    return p;
+  }
+
 } // namespace
 
 parametrization parametrize(const discretePatch &patch,
                             const parametrizeOptions &o)
 {
-  parametrization p;
-  if(patchIsPlanar(patch, o.planeTolerance)) {
+  if(!patchIsPlanar(patch, o.planeTolerance))
+    return parametrizeByMaps(patch, o);
+  checkedMap plane = planeProjection(patch, o.planeTolerance);
+  if(plane.bijective) {
     // meshed on its plane with its holes: none filled
+    parametrization p;
     p.holes = patch.boundaryLoops.size() - 1;
-    p.result = planeProjection(patch, o.planeTolerance);
-    if(!p.result.bijective) p.outcome = parametrizeOutcome::noBijectiveMap;
+    p.result = std::move(plane);
     return p;
   }
-  const double t0 = wallSeconds();
-  discretePatch extended;
-  const discretePatch &mapped = mappedPatch(patch, o, extended, p);
-  p.fillTime = wallSeconds() - t0;
-
-  const std::vector<mapStep> steps = mapChain(o.map);
-  if(steps.empty()) {
-    p.outcome = parametrizeOutcome::notImplemented;
-    return p;
-  }
-  p.result = chainOf(mapped, o, steps, p.fromCache);
-  if(p.result.chosen < 0) {
-    p.outcome = parametrizeOutcome::mapFailed;
-    return p;
-  }
-  if(!p.result.bijective &&
-     o.map != (int)compoundParametrization::automatic &&
-     o.map != (int)compoundParametrization::meanValue)
-    fallBackToMeanValue(mapped, o, p);
-  // Never a folded or flipped map to the planar mesher in automatic mode;
-  // a map chosen by hand is kept as it is, the caller warns
-  if(!p.result.bijective && o.map == (int)compoundParametrization::automatic)
-    p.outcome = parametrizeOutcome::noBijectiveMap;
+  // folded onto itself beyond the input's rounding (a flap of a CAD export
+  // laid flat): mapped as any part, the projection's attempt first. Cut
+  // until each side's projection is one-to-one instead, the flaps of a
+  // non-manifold CAD export ended with more elements against the input
+  // (bench/README.md, Maps and solvers)
+  parametrization p = parametrizeByMaps(patch, o);
+  p.result.attempts.insert(p.result.attempts.begin(), plane.attempts[0]);
+  if(p.result.chosen >= 0) p.result.chosen++;
+  if(p.failedChoice >= 0) p.failedChoice++;
   return p;
 }
 

@@ -119,3 +119,19 @@ TEST(planeProjection, parametrizeMapsAPlanarPatchOnItsPlaneWithItsHoles)
   EXPECT_EQ(chain.chosen().map, (int)compoundParametrization::spectral);
   EXPECT_EQ(chain.filledHoles, 2);
 }
+
+TEST(planeProjection, aPlanarPatchFoldedOntoItselfIsMappedAsAnyOther)
+{
+  // a sliver turned over by 1 % of the square: the projection is tried
+  // first, the chain's map kept
+  const discretePatch p = makePatchOrDie(squareWithTurnedSliver(0.01));
+  parametrizeOptions o;
+  o.planeTolerance = 1e-6;
+  const parametrization m = parametrize(p, o);
+  ASSERT_TRUE(m.ok());
+  ASSERT_GE(m.result.attempts.size(), 2u);
+  EXPECT_EQ(m.result.attempts[0].map, (int)compoundParametrization::plane);
+  EXPECT_FALSE(m.result.attempts[0].bijective());
+  EXPECT_EQ(m.chosen().map, (int)compoundParametrization::spectral);
+  EXPECT_TRUE(checkBijectivity(p, m.result.map.uv).bijective());
+}
