@@ -293,7 +293,8 @@ void reparamReportMeshedModel(GModel *m)
       Msg::Error("Cannot write Mesh.CompoundReportFile '%s': %s", file.c_str(),
                  std::strerror(errno));
     else {
-      std::string json = reportJson(reports, missing, whole.get(), kept);
+      std::string json =
+        reportJson(reports, missing, whole.get(), kept, narrow);
       fwrite(json.data(), 1, json.size(), fp);
       fclose(fp);
       Msg::Info("Reparam: report written to '%s'", file.c_str());

@@ -109,10 +109,13 @@ std::vector<std::string> reportTable(const std::vector<faceReport> &reports,
 // an input
 std::string farthestPointLine(const std::vector<faceReport> &reports,
                               const meshFidelity *whole = nullptr);
+// `narrow`: the faces narrower than a quarter of the size asked
+// (narrowFacesLine), listed as narrowSurfaces
 std::string reportJson(const std::vector<faceReport> &reports,
                        const std::vector<int> &unmeshed = {},
                        const meshFidelity *whole = nullptr,
-                       const std::vector<int> &keptAsInput = {});
+                       const std::vector<int> &keptAsInput = {},
+                       const std::set<int> &narrow = {});
 
 } // namespace reparam
 

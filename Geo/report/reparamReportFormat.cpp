@@ -376,7 +376,8 @@ std::string farthestPointLine(const std::vector<faceReport> &reports,
 std::string reportJson(const std::vector<faceReport> &reports,
                        const std::vector<int> &unmeshed,
                        const meshFidelity *whole,
-                       const std::vector<int> &keptAsInput)
+                       const std::vector<int> &keptAsInput,
+                       const std::set<int> &narrow)
 {
   std::string s = "{\n  \"parametrizationOption\": " +
                   std::to_string(getReparamOptions().parametrization) +
@@ -408,6 +409,9 @@ std::string reportJson(const std::vector<faceReport> &reports,
   s += "],\n  \"inputKeptSurfaces\": [";
   for(std::size_t i = 0; i < keptAsInput.size(); i++)
     s += (i ? ", " : "") + std::to_string(keptAsInput[i]);
+  s += "],\n  \"narrowSurfaces\": [";
+  std::size_t listed = 0;
+  for(int tag : narrow) s += (listed++ ? ", " : "") + std::to_string(tag);
   s += "],\n  \"total\": {\"surfaces\": " + std::to_string(reports.size()) +
        ", " + jsonFields(total(reports, whole)) + "}\n}\n";
   return s;

@@ -309,6 +309,9 @@ TEST(reparamReport, surfaceKeptAsItsInputIsNamed)
   EXPECT_TRUE(has(reportJson({}, {2, 5}), "\"unmeshedSurfaces\": [2, 5]"));
   EXPECT_TRUE(
     has(reportJson({}, {}, nullptr, {3}), "\"inputKeptSurfaces\": [3]"));
+  EXPECT_TRUE(has(reportJson({}), "\"narrowSurfaces\": []"));
+  EXPECT_TRUE(has(reportJson({}, {}, nullptr, {}, {4, 12}),
+                  "\"narrowSurfaces\": [4, 12]"));
 }
 
 TEST(reparamReport, narrowFacesAreNamedWithTheirKappaMean)
