@@ -34,7 +34,8 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
 // Whether every hole of these triangles (inner boundary loop) can be
 // filled (Mesh/maps/holeFilling.h), as the parametrization fills them
 // (Mesh.CompoundFillHoles; true without it, without holes, or for a planar
-// part, which is meshed on its plane with its holes): false means
+// part whose projection is one-to-one, meshed on its plane with its
+// holes): false means
 // reparamTryParametrization fails for that reason, whatever its maps give
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles);
 

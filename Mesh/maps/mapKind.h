@@ -9,8 +9,8 @@
 
 namespace reparam {
 
-// Values of Mesh.CompoundParametrization; `plane` is none: the projection a
-// planar patch gets whatever the option (planeProjection.h)
+// Values of Mesh.CompoundParametrization; `plane` is no value of it: the
+// projection a planar patch gets whatever the option (planeProjection.h)
 enum class compoundParametrization {
   gmsh = 0, // Gmsh's own code (the reference)
   harmonic = 1,
