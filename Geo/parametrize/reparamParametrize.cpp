@@ -352,9 +352,10 @@ bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
   if(!getReparamOptions().fillHoles) return true;
   const trianglePatch p = patchOfTriangles(triangles);
   // an invalid patch is the maps' failure to tell; a planar one whose
-  // projection is one-to-one is meshed on its plane with its holes
+  // projection is one-to-one is meshed on its plane with its holes (tested
+  // only with holes: the layout asks of every part before its map)
   const double planar = CTX::instance()->geom.matchMeshTolerance;
-  return !p.error.ok() ||
+  return !p.error.ok() || p.patch.boundaryLoops.size() < 2 ||
          (patchIsPlanar(p.patch, planar) &&
           planeProjection(p.patch, planar).bijective) ||
          holesFillable(p.patch);
