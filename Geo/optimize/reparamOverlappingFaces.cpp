@@ -70,8 +70,28 @@ namespace {
     return false;
   }
 
+  // Whether another face's elements use nodes of gf's mesh: the
+  // optimization across the cuts moves triangles from face to face, and
+  // meshing gf again (its mesh deleted) would leave theirs on deleted nodes
+  bool nodesUsedByOtherFaces(GFace *gf)
+  {
+    std::set<MVertex *> own(gf->mesh_vertices.begin(), gf->mesh_vertices.end());
+    if(own.empty()) return false;
+    GModel *m = gf->model();
+    for(auto it = m->firstFace(); it != m->lastFace(); ++it) {
+      if(*it == gf) continue;
+      for(std::size_t i = 0; i < (*it)->getNumMeshElements(); i++) {
+        MElement *e = (*it)->getMeshElement(i);
+        for(std::size_t j = 0; j < e->getNumVertices(); j++)
+          if(own.count(e->getVertex(j))) return true;
+      }
+    }
+    return false;
+  }
+
   bool meshedWithInput(GFace *gf, GFace *other, std::size_t overlaps)
   {
+    if(nodesUsedByOtherFaces(gf)) return false;
     if(!reparamMeshFaceWithItsInput(
          gf, 0,
          "its mesh lay on surface " + std::to_string(other->tag()) + "'s (" +

@@ -180,6 +180,44 @@ TEST(reparamOverlappingFaces, theOtherFaceIsTriedWhenTheFirstStaysOnIt)
   EXPECT_EQ(above->triangles.size() + below->triangles.size(), triangles);
 }
 
+TEST(reparamOverlappingFaces, aFaceWhoseNodesTheOtherUsesKeepsItsMesh)
+{
+  // both faces meshed as the same fan around a node of face 1 (the
+  // optimization across the cuts moves triangles from face to face: the
+  // other face's triangles then use that face's nodes): face 1, tried
+  // first, would delete the node face 2's triangles stand on; face 2 is
+  // meshed with its input instead
+  gmsh::clear();
+  gmsh::model::add("sharedNode");
+  gmsh::model::addDiscreteEntity(0, 1);
+  gmsh::model::addDiscreteEntity(1, 1, {1, 1});
+  gmsh::model::addDiscreteEntity(2, 1, {1});
+  gmsh::model::addDiscreteEntity(2, 2, {1});
+  gmsh::model::mesh::addNodes(0, 1, {1}, {0., 0., 0.});
+  gmsh::model::mesh::addNodes(1, 1, {2, 3, 4},
+                              {1., 0., 0., 1., 1., 0., 0., 1., 0.});
+  gmsh::model::mesh::addNodes(2, 1, {5}, {0.5, 0.5, 0.});
+  gmsh::model::mesh::addElementsByType(1, 1, {}, {1, 2, 2, 3, 3, 4, 4, 1});
+  gmsh::model::mesh::addElementsByType(1, 2, {},
+                                       {1, 2, 5, 2, 3, 5, 3, 4, 5, 4, 1, 5});
+  gmsh::model::mesh::addElementsByType(2, 2, {},
+                                       {1, 5, 2, 2, 5, 3, 3, 5, 4, 4, 5, 1});
+  GModel *m = GModel::current();
+  GFace *above = m->getFaceByTag(1), *below = m->getFaceByTag(2);
+  setInput(above, 0.1, true);
+  setInput(below, -0.1, false);
+  MVertex *shared = above->mesh_vertices.at(0);
+  ASSERT_EQ(facesMeshedOntoEachOther(m).size(), 1u);
+  EXPECT_EQ(reparamSeparateOverlappingFaces(m), 1u);
+  EXPECT_FALSE(keptAsInput(above));
+  EXPECT_TRUE(keptAsInput(below));
+  ASSERT_EQ(above->mesh_vertices.size(), 1u);
+  EXPECT_EQ(above->mesh_vertices[0], shared);
+  EXPECT_EQ(above->triangles.size(), 4u);
+  EXPECT_NEAR(highestNode(below), 0.1, 1e-12);
+  EXPECT_TRUE(facesMeshedOntoEachOther(m).empty());
+}
+
 TEST(reparamOverlappingFaces, anInputWithoutInnerNodeIsNoMeshToGive)
 {
   // both inputs two triangles between the corners: stitched to the curves
