@@ -124,6 +124,29 @@ namespace {
     return m;
   }
 
+  // Where a part's maps fail, in the layout's node indices (found on the
+  // part's triangles)
+  void placeOnLayout(const modelTriangulation &model,
+                     const std::vector<int> &part, const mapFailurePlace &where,
+                     partCheck &check)
+  {
+    if(where.through.empty() && where.apart.empty()) return;
+    std::unordered_map<MVertex *, int> index;
+    for(int t : part)
+      for(int k = 0; k < 3; k++)
+        index[model.triangles[t]->getVertex(k)] = model.mesh.triangles[t][k];
+    for(MVertex *v : where.through) {
+      auto it = index.find(v);
+      if(it != index.end()) check.cutThrough.push_back(it->second);
+    }
+    std::sort(check.cutThrough.begin(), check.cutThrough.end());
+    for(const auto &pr : where.apart) {
+      auto a = index.find(pr[0]), b = index.find(pr[1]);
+      if(a != index.end() && b != index.end())
+        check.cutApart.push_back({{a->second, b->second}});
+    }
+  }
+
   double totalArea(const layoutMesh &mesh)
   {
     double sum = 0.;
@@ -216,14 +239,16 @@ namespace {
 
 } // namespace
 
-partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles)
+partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles,
+                            mapFailurePlace *where)
 {
   std::vector<SPoint2> uv;
   std::vector<SPoint3> xyz;
   std::vector<int> nodes;
   partCheck check;
   if(failsBeforeTheMap(triangles, check)) return check;
-  int done = reparamTryParametrization(triangles, uv, xyz, nodes, check.reason);
+  int done =
+    reparamTryParametrization(triangles, uv, xyz, nodes, check.reason, where);
   if(done <= 0) {
     check.ok = false;
     return check;
@@ -352,7 +377,10 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
     std::vector<MTriangle *> t(part.size());
     for(std::size_t i = 0; i < part.size(); i++)
       t[i] = model.triangles[part[i]];
-    return reparamVerifyPart(t);
+    mapFailurePlace where;
+    partCheck check = reparamVerifyPart(t, &where);
+    placeOnLayout(model, part, where, check);
+    return check;
   };
   layoutResult layout = computePatchLayout(model.mesh, parameters, verify);
 

@@ -13,6 +13,7 @@
 #include "SPoint2.h"
 #include "SPoint3.h"
 #include "patchLayout.h"
+#include "reparamParametrize.h"
 
 class MTriangle;
 
@@ -51,8 +52,10 @@ layoutParameters reparamLayoutParameters(const layoutMesh &mesh);
 
 // The part is kept if the map CreateGeometry will compute for it is
 // one-to-one and does not crowd it, and the part is not much larger than
-// its boundary
-partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles);
+// its boundary. Refused because its conformal maps fold, where they fail
+// goes in `where` (if given).
+partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles,
+                            mapFailurePlace *where = nullptr);
 
 // Whether Gmsh's classification must end a curve at node v (patches/0012):
 // three cut edges or more of the last layout meet there (two boundary loops

@@ -7,6 +7,7 @@
 // faces' CreateGeometry, by Compound Surface meshing, by the patch checks of
 // ClassifySurfaces and by the patch layout's verification of its parts.
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
@@ -51,6 +52,8 @@ namespace {
     GFace *face = nullptr; // with mapCaller::face
     // why the map failed: the layout's reason, the safety net's warning
     std::string failure;
+    // for the layout: where the maps not kept fail
+    mapFailurePlace failed;
     bool quiet() const { return caller == mapCaller::layout; }
   };
 
@@ -228,6 +231,36 @@ namespace {
               record.fromLayout ? " (computed by the layout)" : "");
   }
 
+  // Where the maps not kept fail, on Gmsh's nodes (not those the hole
+  // filling adds)
+  mapFailurePlace failurePlace(const trianglePatch &p, const parametrization &m)
+  {
+    std::vector<int> nodeOf(p.canonical.size(), -1);
+    for(std::size_t i = 0; i < p.canonical.size(); i++)
+      if(p.canonical[i] >= 0 && p.canonical[i] < (int)nodeOf.size())
+        nodeOf[p.canonical[i]] = (int)i;
+    auto gmshNode = [&](int n) -> MVertex * {
+      return n >= 0 && n < (int)nodeOf.size() && nodeOf[n] >= 0 ?
+               p.nodes[nodeOf[n]] :
+               nullptr;
+    };
+    mapFailurePlace place;
+    const auto &attempts = m.result.attempts;
+    for(std::size_t a = 0; a < attempts.size(); a++) {
+      if((int)a == m.result.chosen) continue;
+      for(int n : attempts[a].failedNodes)
+        if(MVertex *v = gmshNode(n)) place.through.push_back(v);
+      for(const auto &pr : attempts[a].foldPairs) {
+        MVertex *u = gmshNode(pr[0]), *v = gmshNode(pr[1]);
+        if(u && v) place.apart.push_back({{u, v}});
+      }
+    }
+    std::sort(place.through.begin(), place.through.end());
+    place.through.erase(std::unique(place.through.begin(), place.through.end()),
+                        place.through.end());
+    return place;
+  }
+
   // Gmsh's arrays: the nodes in order of first appearance, their (u, v)
   void writeOutputs(trianglePatch &p, const parametrization &m,
                     std::vector<MVertex *> &nodes, std::vector<SPoint2> &uv,
@@ -287,6 +320,7 @@ namespace {
     o.cache = &lastLayout().maps;
     o.keepInCache = r.caller == mapCaller::layout;
     result = parametrize(p.patch, o);
+    if(r.quiet()) r.failed = failurePlace(p, result);
     if(!r.quiet()) logHoles(result, triangles.size());
     const std::string surface = surfaceName(p.nodes, triangles.size());
     if(!logMaps(r, result, o.map, surface)) return -1;
@@ -303,7 +337,7 @@ void reparamForgetLayoutMaps() { lastLayout().maps.clear(); }
 int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<SPoint2> &uv,
                               std::vector<SPoint3> &xyz, std::vector<int> &tri,
-                              std::string &why)
+                              std::string &why, mapFailurePlace *where)
 {
   std::vector<MVertex *> nodes;
   parametrizationRecord record;
@@ -325,6 +359,7 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
     // Patch layout)
     why = "its conformal maps fold (it winds around)";
     done = -1;
+    if(where) *where = r.failed;
   }
   else if(done > 0 && getReparamOptions().fillHoles &&
           record.map != (int)compoundParametrization::plane &&

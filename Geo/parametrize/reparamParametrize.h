@@ -6,6 +6,7 @@
 #ifndef REPARAM_GEO_PARAMETRIZE_H
 #define REPARAM_GEO_PARAMETRIZE_H
 
+#include <array>
 #include <string>
 #include <vector>
 #include "SPoint2.h"
@@ -13,6 +14,7 @@
 
 class GFace;
 class MTriangle;
+class MVertex;
 
 namespace reparam {
 
@@ -24,12 +26,20 @@ void reparamForgetLayoutMaps();
 // computed without a word in the log (the patch layout tries hundreds of
 // parts): 1 with the (u, v) and 3D points of the nodes and the triangles'
 // node indices when it is one-to-one, else -1 and the reason in `why`; 0
-// when Mesh.CompoundParametrization = 0 leaves it to Gmsh.
+// when Mesh.CompoundParametrization = 0 leaves it to Gmsh. Refused because
+// its conformal maps fold, where they fail goes in `where` (if given): the
+// layout cuts it there.
+struct mapFailurePlace {
+  // nodes of the triangles the maps leave flipped (else degenerate)
+  std::vector<MVertex *> through;
+  // a node of each of two boundary edges whose images cross
+  std::vector<std::array<MVertex *, 2> > apart;
+};
 int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<SPoint2> &uv,
                               std::vector<SPoint3> &xyz,
-                              std::vector<int> &triangleNodes,
-                              std::string &why);
+                              std::vector<int> &triangleNodes, std::string &why,
+                              mapFailurePlace *where = nullptr);
 
 // Whether every hole of these triangles (inner boundary loop) can be
 // filled (Mesh/maps/holeFilling.h), as the parametrization fills them

@@ -128,7 +128,8 @@ namespace {
 } // namespace
 
 std::size_t countBoundaryFolds(const discretePatch &patch,
-                               const std::vector<double> &uv, double within)
+                               const std::vector<double> &uv, double within,
+                               std::vector<std::array<int, 2> > *pairs)
 {
   boundaryEdges all{uv, {}, {}, {}};
   for(const auto &loop : patch.boundaryLoops)
@@ -159,8 +160,11 @@ std::size_t countBoundaryFolds(const discretePatch &patch,
     if(e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1]) continue;
     if(segmentsIntersect(&uv[2 * e[0]], &uv[2 * e[1]], &uv[2 * f[0]],
                          &uv[2 * f[1]]) &&
-       !(within > 0. && nodesWithin(uv, e, f, within)))
+       !(within > 0. && nodesWithin(uv, e, f, within))) {
       folds++;
+      if(pairs && pairs->size() < maxFoldPairs)
+        pairs->push_back({{e[0], f[0]}});
+    }
   }
   return folds;
 }
@@ -190,7 +194,7 @@ bijectivityReport checkBijectivity(const discretePatch &patch,
     else if(a / std::fabs(totalUv) < degenerateRatio * area3d[t] / total3d)
       report.degenerateTriangles.push_back((int)t);
   }
-  report.numFolds = countBoundaryFolds(patch, uv);
+  report.numFolds = countBoundaryFolds(patch, uv, 0., &report.foldPairs);
   return report;
 }
 } // namespace reparam

@@ -8,6 +8,7 @@
 #ifndef BIJECTIVITY_CHECK_H
 #define BIJECTIVITY_CHECK_H
 
+#include <array>
 #include <cstddef>
 #include <vector>
 #include "discretePatch.h"
@@ -25,6 +26,8 @@ struct bijectivityReport {
   std::vector<int> degenerateTriangles;
   // Pairs of boundary edges without a common node whose images intersect
   std::size_t numFolds = 0;
+  // The first node of each edge of such pairs (at most maxFoldPairs)
+  std::vector<std::array<int, 2> > foldPairs;
   // Degenerate images are one-to-one, only numerically fragile: they do
   // not count here
   bool bijective() const { return flippedTriangles.empty() && numFolds == 0; }
@@ -43,9 +46,13 @@ double orientation2d(const double *a, const double *b, const double *c);
 // (expected linear time), each candidate pair tested exactly. With `within`
 // > 0, a pair where a node of one edge lies within that uv distance of the
 // other is not counted (a crossing of the input's own rounding).
-std::size_t countBoundaryFolds(const discretePatch &patch,
-                               const std::vector<double> &uv,
-                               double within = 0.);
+// `pairs` (if given): the first node of each edge of the first
+// maxFoldPairs crossing pairs.
+const std::size_t maxFoldPairs = 64;
+std::size_t
+countBoundaryFolds(const discretePatch &patch, const std::vector<double> &uv,
+                   double within = 0.,
+                   std::vector<std::array<int, 2> > *pairs = nullptr);
 
 const double defaultDegenerateRatio = 1e-12;
 

@@ -172,12 +172,85 @@ namespace {
     return x;
   }
 
+  // The first and last positions in `order` of the triangles at each of
+  // `nodes` (sorted); first > last for a node on none
+  std::vector<std::array<std::size_t, 2> >
+  fanRanges(const layoutMesh &mesh, const std::vector<int> &part,
+            const std::vector<int> &order, const std::vector<int> &nodes)
+  {
+    std::vector<std::array<std::size_t, 2> > range(nodes.size(),
+                                                   {{part.size(), 0}});
+    for(std::size_t k = 0; k < order.size(); k++)
+      for(int c = 0; c < 3; c++) {
+        const int node = mesh.triangles[part[order[k]]][c];
+        auto it = std::lower_bound(nodes.begin(), nodes.end(), node);
+        if(it == nodes.end() || *it != node) continue;
+        auto &r = range[it - nodes.begin()];
+        r[0] = std::min(r[0], k);
+        r[1] = std::max(r[1], k);
+      }
+    return range;
+  }
+
+  // The levels of the sweep (order[0..k] on one side) that cut where the
+  // part's maps fail: through one of check.cutThrough (between the first
+  // and the last of its triangles in the order), or between the two nodes
+  // of a pair of check.cutApart (between the last triangle of one and the
+  // first of the other, else between the middles of their triangles).
+  // Of those leaving at least a tenth of the area on each side and at most
+  // twice as long for the area they separate as `fallback`'s, the one of
+  // smallest ratio; `fallback` without any (a level cutting a sliver off
+  // around the failure leaves a face smaller than the mesh, a long cut
+  // pinches and leaves parts that fail again, and where the maps fail all
+  // along a part that winds around, any level does).
+  std::size_t
+  levelAtFailure(const layoutMesh &mesh, const std::vector<int> &part,
+                 const std::vector<int> &order, const partCheck &check,
+                 const std::vector<double> &ratio, std::size_t fallback)
+  {
+    std::vector<std::array<std::size_t, 2> > levels;
+    for(const auto &r : fanRanges(mesh, part, order, check.cutThrough))
+      if(r[0] < r[1]) levels.push_back({{r[0], r[1]}});
+    std::vector<int> paired;
+    for(const auto &pr : check.cutApart)
+      paired.insert(paired.end(), {pr[0], pr[1]});
+    std::sort(paired.begin(), paired.end());
+    paired.erase(std::unique(paired.begin(), paired.end()), paired.end());
+    const auto pairedRanges = fanRanges(mesh, part, order, paired);
+    auto rangeOf = [&](int node) {
+      return pairedRanges[std::lower_bound(paired.begin(), paired.end(), node) -
+                          paired.begin()];
+    };
+    for(const auto &pr : check.cutApart) {
+      std::array<std::size_t, 2> a = rangeOf(pr[0]), b = rangeOf(pr[1]);
+      if(a[0] > a[1] || b[0] > b[1]) continue; // not on the part
+      if(a[0] > b[0]) std::swap(a, b);
+      // every triangle of one before every triangle of the other, else
+      // between the middles of their triangles
+      if(a[1] < b[0])
+        levels.push_back({{a[1], b[0]}});
+      else if((a[0] + a[1]) / 2 < (b[0] + b[1]) / 2)
+        levels.push_back({{(a[0] + a[1]) / 2, (b[0] + b[1]) / 2}});
+    }
+    if(fallback >= ratio.size()) return fallback;
+    const double longest = 2. * ratio[fallback];
+    std::size_t best = fallback;
+    double bestRatio = std::numeric_limits<double>::max();
+    for(const auto &l : levels)
+      for(std::size_t k = l[0]; k < l[1] && k < ratio.size(); k++)
+        if(ratio[k] < bestRatio && ratio[k] <= longest) {
+          best = k;
+          bestRatio = ratio[k];
+        }
+    return best;
+  }
+
 } // namespace
 
 std::vector<char> bisectPart(const layoutMesh &mesh,
                              const triangleAdjacency &adjacency,
                              const std::vector<int> &part,
-                             std::size_t coarseNodes)
+                             std::size_t coarseNodes, const partCheck &check)
 {
   const std::size_t n = part.size();
   std::vector<char> side(n, 0);
@@ -211,6 +284,7 @@ std::vector<char> bisectPart(const layoutMesh &mesh,
   // smallest length over the smaller side's area, among those leaving at
   // least a tenth of the area on each side (else the middle one).
   std::vector<char> in(n, 0);
+  std::vector<double> ratio(n - 1, std::numeric_limits<double>::max());
   double cut = 0., sideArea = 0.;
   double bestRatio = std::numeric_limits<double>::max();
   std::size_t best = n / 2 - (n % 2 == 0 ? 1 : 0);
@@ -224,12 +298,14 @@ std::vector<char> bisectPart(const layoutMesh &mesh,
     }
     const double smaller = std::min(sideArea, total - sideArea);
     if(smaller < 0.1 * total) continue;
-    const double ratio = cut / smaller;
-    if(ratio < bestRatio) {
-      bestRatio = ratio;
+    ratio[k] = cut / smaller;
+    if(ratio[k] < bestRatio) {
+      bestRatio = ratio[k];
       best = k;
     }
   }
+  if(!check.cutThrough.empty() || !check.cutApart.empty())
+    best = levelAtFailure(mesh, part, order, check, ratio, best);
   for(std::size_t k = 0; k <= best; k++) side[order[k]] = 1;
   return side;
 }

@@ -122,8 +122,9 @@ namespace {
       out.kept = true;
       return out;
     }
-    side = bisectPart(mesh, adjacency, part.triangles,
-                      out.check.bySize ? parameters.coarseCutNodes : 0);
+    side =
+      bisectPart(mesh, adjacency, part.triangles,
+                 out.check.bySize ? parameters.coarseCutNodes : 0, out.check);
     out.record.movedFans = unpinchCut(mesh, adjacency, part.triangles, side);
     cutInTwo(mesh, adjacency, part, side, out);
     return out;

@@ -63,6 +63,11 @@ struct partCheck {
   // refused for its number of triangles alone (not mapped): cut by a
   // coarse Fiedler vector (layoutParameters::coarseCutNodes)
   bool bySize = false;
+  // Where its maps fail (nodes of the mesh): the cut goes through one of
+  // `cutThrough` (sorted; triangles flipped or crushed) or between the two
+  // nodes of a pair of `cutApart` (boundary edges whose images cross)
+  std::vector<int> cutThrough;
+  std::vector<std::array<int, 2> > cutApart;
 };
 typedef std::function<partCheck(const std::vector<int> &triangles)>
   partVerifier;
@@ -127,10 +132,16 @@ int mergeNoisePatches(const layoutMesh &mesh,
 // Fiedler vector of a graph of about coarseNodes clusters of its
 // triangles, smoothed on its own graph (the eigensolver's cost grows
 // faster than the graph: a cut where the cut's place matters less)
+// `check`'s places where the part's maps fail (partCheck::cutThrough,
+// cutApart), if any: the level is one whose cut goes through one of those
+// nodes or between the nodes of one of those pairs (a fold about one node
+// stays whole in one half of a cut elsewhere, refused for the same reason
+// level after level)
 std::vector<char> bisectPart(const layoutMesh &mesh,
                              const triangleAdjacency &adjacency,
                              const std::vector<int> &part,
-                             std::size_t coarseNodes = 0);
+                             std::size_t coarseNodes = 0,
+                             const partCheck &check = partCheck());
 
 // The edge-connected components of a part (through manifold edges whose two
 // triangles are both in the part)

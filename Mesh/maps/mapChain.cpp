@@ -1,5 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
+#include <algorithm>
 #include "barycentricMap.h"
 #include "conformalMap.h"
 #include "harmonicMap.h"
@@ -47,6 +48,27 @@ std::vector<mapStep> mapChain(int choice)
   }
 }
 
+namespace {
+
+  // Where the attempt's map fails (mapAttempt::failedNodes, foldPairs)
+  void recordFailure(const discretePatch &patch,
+                     const bijectivityReport &report, mapAttempt &attempt)
+  {
+    const std::vector<int> &bad = report.flippedTriangles.empty() ?
+                                    report.degenerateTriangles :
+                                    report.flippedTriangles;
+    for(int t : bad)
+      for(int k = 0; k < 3; k++)
+        attempt.failedNodes.push_back(patch.triangles[t][k]);
+    std::sort(attempt.failedNodes.begin(), attempt.failedNodes.end());
+    attempt.failedNodes.erase(
+      std::unique(attempt.failedNodes.begin(), attempt.failedNodes.end()),
+      attempt.failedNodes.end());
+    attempt.foldPairs = report.foldPairs;
+  }
+
+} // namespace
+
 checkedMap runMapChain(const discretePatch &patch,
                        const std::vector<mapStep> &steps, bool repair)
 {
@@ -75,6 +97,7 @@ checkedMap runMapChain(const discretePatch &patch,
       attempt.flippedAfter = report.flippedTriangles.size();
       attempt.foldsAfter = report.numFolds;
       attempt.degenerateAfter = report.degenerateTriangles.size();
+      recordFailure(patch, report, attempt);
     }
     attempt.checkTime = wallSeconds() - t1;
     result.attempts.push_back(attempt);

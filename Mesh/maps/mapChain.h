@@ -34,6 +34,11 @@ struct mapAttempt {
   bool repairTried = false;
   flipRepairResult repair;
   std::size_t flippedAfter = 0, foldsAfter = 0, degenerateAfter = 0;
+  // Where the map fails after the repair, for the layout to cut there
+  // (patch nodes): the nodes of the triangles still flipped, else of the
+  // degenerate ones; the pairs of boundary nodes whose edges cross
+  std::vector<int> failedNodes;
+  std::vector<std::array<int, 2> > foldPairs;
   double mapTime = 0., checkTime = 0.; // wall seconds; check includes repair
   bool bijective() const { return error.ok() && !flippedAfter && !foldsAfter; }
 };

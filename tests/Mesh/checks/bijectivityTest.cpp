@@ -1,5 +1,6 @@
 // Reparam - flips, folds, their repair and the automatic chain
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include "bijectivityCheck.h"
@@ -74,6 +75,12 @@ TEST(bijectivity, foldsOfBoundaryLoops)
   discretePatch bowTie =
     loopPatch({{{0, 0}}, {{1, 0}}, {{0, 1}}, {{1, 1}}}, uv);
   EXPECT_EQ(countBoundaryFolds(bowTie, uv), 1u);
+  // the crossing pair named by the first node of each edge (1-2, 3-0)
+  std::vector<std::array<int, 2> > pairs;
+  EXPECT_EQ(countBoundaryFolds(bowTie, uv, 0., &pairs), 1u);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(std::min(pairs[0][0], pairs[0][1]), 1);
+  EXPECT_EQ(std::max(pairs[0][0], pairs[0][1]), 3);
   // a long loop (a circle of 4000 nodes) wound twice crosses itself: the
   // quadtree finds every crossing of the second turn with the first
   uv.clear();
@@ -268,10 +275,59 @@ TEST(bijectivity, automaticChainEndsOneToOneOnAFoldingRamp)
   ASSERT_EQ(c.attempts.size(), 3u);
   EXPECT_GE(c.attempts[0].foldsAfter, 1u);
   EXPECT_GE(c.attempts[1].foldsAfter, 1u);
+  // where they fold: pairs of boundary nodes (at most maxFoldPairs), for the
+  // layout's cut; the mean value map, one-to-one, has none
+  for(int a = 0; a < 2; a++) {
+    const mapAttempt &m = c.attempts[a];
+    EXPECT_EQ(m.foldPairs.size(), std::min(m.foldsAfter, maxFoldPairs)) << a;
+    for(const auto &pr : m.foldPairs)
+      for(int n : pr) {
+        EXPECT_GE(n, 0);
+        EXPECT_LT(n, (int)p.points.size());
+      }
+  }
+  EXPECT_TRUE(c.attempts[2].foldPairs.empty());
+  EXPECT_TRUE(c.attempts[2].failedNodes.empty());
   EXPECT_TRUE(c.bijective);
   EXPECT_EQ(c.chosen, 2);
   EXPECT_EQ(c.attempts[2].map, (int)compoundParametrization::meanValue);
   EXPECT_TRUE(checkBijectivity(p, c.map.uv).bijective());
+}
+
+TEST(bijectivity, aMapLeftFlippedNamesTheNodesOfItsFlippedTriangles)
+{
+  // a step whose map turns over the triangle at one corner of a 3x3 grid
+  // (its corner node moved across the diagonal), with no repair: the
+  // attempt names that triangle's nodes
+  discretePatch p = makePatchOrDie(rectangleGrid(3, 3, 1., 1.));
+  int corner = -1; // the node at (0, 0)
+  for(std::size_t i = 0; i < p.points.size(); i++)
+    if(p.points[i].x() == 0. && p.points[i].y() == 0.) corner = (int)i;
+  ASSERT_GE(corner, 0);
+  mapStep turned{(int)compoundParametrization::barycentric,
+                 [&](const discretePatch &q) {
+                   patchMap m;
+                   for(const SPoint3 &x : q.points) {
+                     m.uv.push_back(x.x());
+                     m.uv.push_back(x.y());
+                   }
+                   m.uv[2 * corner] = m.uv[2 * corner + 1] = 0.5;
+                   return m;
+                 },
+                 false};
+  checkedMap c = runMapChain(p, {turned}, false);
+  ASSERT_EQ(c.attempts.size(), 1u);
+  const mapAttempt &a = c.attempts[0];
+  ASSERT_GE(a.flippedAfter, 1u);
+  std::vector<int> expected;
+  for(const auto &t : p.triangles)
+    if(std::find(t.begin(), t.end(), corner) != t.end())
+      expected.insert(expected.end(), t.begin(), t.end());
+  std::sort(expected.begin(), expected.end());
+  expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+  // the flipped triangles are those at the corner node
+  EXPECT_EQ(a.failedNodes, expected);
+  EXPECT_TRUE(std::is_sorted(a.failedNodes.begin(), a.failedNodes.end()));
 }
 
 TEST(bijectivity, automaticChainStopsAtTheSpectralMapWhenItIsOneToOne)

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include "GModel.h"
 #include "MTriangle.h"
+#include "bijectivityCheck.h"
 #include "gmsh.h"
 #include "gmshTestEnvironment.h"
 #include "patchLayout.h"
@@ -255,6 +256,99 @@ TEST(patchLayout, bisectionCutsAStripStraightAcross)
   EXPECT_EQ(partComponents(adjacency, all, all.size()).size(), 1u);
 }
 
+TEST(patchLayout, bisectionCutsWhereTheMapsFail)
+{
+  // the strip of bisectionCutsAStripStraightAcross, whose shortest cut for
+  // its area is in the middle (x = 5, length over area 1 / 5): told the
+  // maps fail at the node (3.5, 0.5), the cut goes through it (its
+  // triangles on both sides), across the strip (1 / 3.5); told two nodes
+  // cross, it puts them on either side; a node at x = 1 (1 / 1: more than
+  // twice as long for its area) leaves the cut in the middle
+  layoutMesh mesh = meshOf(rectangleGrid(40, 4, 10., 1.));
+  triangleAdjacency adjacency = makeTriangleAdjacency(mesh.triangles);
+  std::vector<int> all(mesh.triangles.size());
+  for(std::size_t i = 0; i < all.size(); i++) all[i] = (int)i;
+  auto nodeAt = [&](double x, double y) {
+    for(std::size_t n = 0; n < mesh.points.size(); n++)
+      if(std::fabs(mesh.points[n].x() - x) < 1e-9 &&
+         std::fabs(mesh.points[n].y() - y) < 1e-9)
+        return (int)n;
+    return -1;
+  };
+  auto sidesAt = [&](const std::vector<char> &side, int node) {
+    int on[2] = {0, 0};
+    for(std::size_t t = 0; t < all.size(); t++)
+      for(int k = 0; k < 3; k++)
+        if(mesh.triangles[t][k] == node) on[(int)side[t]]++;
+    return std::array<int, 2>{{on[0], on[1]}};
+  };
+  partCheck failing{false, "its conformal maps fold", false};
+  const int v = nodeAt(3.5, 0.5);
+  ASSERT_GE(v, 0);
+  failing.cutThrough = {v};
+  std::vector<char> side = bisectPart(mesh, adjacency, all, 0, failing);
+  std::array<int, 2> on = sidesAt(side, v);
+  EXPECT_GT(on[0], 0);
+  EXPECT_GT(on[1], 0);
+  double area[2];
+  EXPECT_NEAR(cutOf(mesh, adjacency, side, area), 1., 1e-12);
+  EXPECT_NEAR(std::min(area[0], area[1]), 3.5, 1e-12);
+  // a pair to part: nodes at x = 6 and x = 7
+  partCheck crossing{false, "its conformal maps fold", false};
+  const int a = nodeAt(6., 0.5), b = nodeAt(7., 0.5);
+  crossing.cutApart = {{{a, b}}};
+  side = bisectPart(mesh, adjacency, all, 0, crossing);
+  const std::array<int, 2> onA = sidesAt(side, a), onB = sidesAt(side, b);
+  EXPECT_TRUE((onA[0] == 0 && onB[1] == 0) || (onA[1] == 0 && onB[0] == 0));
+  EXPECT_NEAR(cutOf(mesh, adjacency, side, area), 1., 1e-12);
+  // too far off the middle, and without any place: the middle
+  partCheck far{false, "its conformal maps fold", false};
+  far.cutThrough = {nodeAt(1., 0.5)};
+  for(const partCheck &c : {far, partCheck()}) {
+    side = bisectPart(mesh, adjacency, all, 0, c);
+    cutOf(mesh, adjacency, side, area);
+    EXPECT_NEAR(std::min(area[0], area[1]), 5., 1e-12);
+  }
+}
+
+TEST(patchLayout, aPartFailingAtANodeIsCutThroughItOnce)
+{
+  // a verifier refusing a part that holds every triangle around the node
+  // (3.5, 0.5), telling where: one cut, through the node; told nothing, the
+  // cuts halve the part around it level after level
+  layoutMesh mesh = meshOf(rectangleGrid(40, 4, 10., 1.));
+  int v = -1;
+  for(std::size_t n = 0; n < mesh.points.size(); n++)
+    if(std::fabs(mesh.points[n].x() - 3.5) < 1e-9 &&
+       std::fabs(mesh.points[n].y() - 0.5) < 1e-9)
+      v = (int)n;
+  ASSERT_GE(v, 0);
+  std::vector<int> fan;
+  for(std::size_t t = 0; t < mesh.triangles.size(); t++)
+    for(int k = 0; k < 3; k++)
+      if(mesh.triangles[t][k] == v) fan.push_back((int)t);
+  for(bool tell : {true, false}) {
+    partVerifier verify = [&](const std::vector<int> &part) {
+      partCheck c;
+      std::size_t held = 0;
+      for(int t : part) held += std::count(fan.begin(), fan.end(), t);
+      if(held == fan.size()) {
+        c = partCheck{false, "its conformal maps fold", false};
+        if(tell) c.cutThrough = {v};
+      }
+      return c;
+    };
+    layoutResult r = computePatchLayout(mesh, layoutParameters(), verify);
+    if(tell) {
+      EXPECT_EQ(r.splits.size(), 1u);
+      EXPECT_EQ(r.numPatches, 2);
+    }
+    else
+      EXPECT_GE(r.splits.size(), 3u);
+    EXPECT_TRUE(r.unverified.empty()) << tell;
+  }
+}
+
 TEST(patchLayout, coarseBisectionCutsALongStripAcrossToo)
 {
   // 4000 triangles, the Fiedler vector of about 100 clusters: a cut across
@@ -412,6 +506,30 @@ TEST(patchLayout, longStripsAreCutOnlyWhereTheyWindAround)
   EXPECT_NE(r.splits[0].reason.find("conformal maps fold"), std::string::npos)
     << r.splits[0].reason;
   expectDiskPatches(ramp, r);
+}
+
+TEST(patchLayout, aRefusedRampSaysWhereItsMapsFold)
+{
+  // the ramp of 1.5 turns refused because its conformal maps fold: the
+  // verification names pairs of its boundary nodes whose edges cross (at
+  // most maxFoldPairs for each of the two conformal maps), on the ramp
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  gmshTriangulation g(helicoidStrip(120, 6, 1.5, 1., 2., 0.05));
+  mapFailurePlace where;
+  partCheck c = reparamVerifyPart(g.triangles, &where);
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.reason.find("conformal maps fold"), std::string::npos);
+  EXPECT_GE(where.apart.size(), 1u);
+  EXPECT_LE(where.apart.size(), 2 * maxFoldPairs);
+  for(const auto &pr : where.apart)
+    for(MVertex *v : pr)
+      EXPECT_NE(std::find(g.vertices.begin(), g.vertices.end(), v),
+                g.vertices.end());
+  // a part its first map flattens says nothing
+  gmshTriangulation flat(rectangleGrid(10, 2, 5., 1.));
+  mapFailurePlace none;
+  EXPECT_TRUE(reparamVerifyPart(flat.triangles, &none).ok);
+  EXPECT_TRUE(none.through.empty() && none.apart.empty());
 }
 
 TEST(patchLayout, largenessComparesTheAreaWithTheDiskOfTheBoundary)
