@@ -4,6 +4,7 @@
 // edge is left inside both; the input's own non-manifold edges are none
 
 #include <cmath>
+#include <string>
 #include <gtest/gtest.h>
 #include "GFace.h"
 #include "GModel.h"
@@ -18,19 +19,26 @@ using namespace reparam;
 
 namespace {
 
+  // A closed curve 1 from point 1 (node 1 at the origin) and faces 1 and
+  // 2 bounded by it, without other nodes or elements yet
+  void twoFacesOnALoop(const std::string &name)
+  {
+    gmsh::clear();
+    gmsh::model::add(name);
+    gmsh::model::addDiscreteEntity(0, 1);
+    gmsh::model::addDiscreteEntity(1, 1, {1, 1});
+    gmsh::model::addDiscreteEntity(2, 1, {1});
+    gmsh::model::addDiscreteEntity(2, 2, {1});
+    gmsh::model::mesh::addNodes(0, 1, {1}, {0., 0., 0.});
+  }
+
   // A closed curve 1 through the unit square's corners (nodes 1-4, node 1
   // on point 1), faces 1 (above) and 2 (below) on it, both meshed with the
   // same two triangles across the diagonal 1-3 (turned the other way
   // below): the mesh of a pillow thinner than the size
   void flatPillowModel()
   {
-    gmsh::clear();
-    gmsh::model::add("pillow");
-    gmsh::model::addDiscreteEntity(0, 1);
-    gmsh::model::addDiscreteEntity(1, 1, {1, 1});
-    gmsh::model::addDiscreteEntity(2, 1, {1});
-    gmsh::model::addDiscreteEntity(2, 2, {1});
-    gmsh::model::mesh::addNodes(0, 1, {1}, {0., 0., 0.});
+    twoFacesOnALoop("pillow");
     gmsh::model::mesh::addNodes(1, 1, {2, 3, 4},
                                 {1., 0., 0., 1., 1., 0., 0., 1., 0.});
     gmsh::model::mesh::addElementsByType(1, 1, {}, {1, 2, 2, 3, 3, 4, 4, 1});
@@ -104,13 +112,7 @@ TEST(reparamOverlappingFaces, aPillowMeshedFlatReopensAsItsInput)
 TEST(reparamOverlappingFaces, theSameTriangleInTwoFacesIsAnOverlap)
 {
   // a pillow of three nodes: one triangle in each face, no edge inside
-  gmsh::clear();
-  gmsh::model::add("triangle");
-  gmsh::model::addDiscreteEntity(0, 1);
-  gmsh::model::addDiscreteEntity(1, 1, {1, 1});
-  gmsh::model::addDiscreteEntity(2, 1, {1});
-  gmsh::model::addDiscreteEntity(2, 2, {1});
-  gmsh::model::mesh::addNodes(0, 1, {1}, {0., 0., 0.});
+  twoFacesOnALoop("triangle");
   gmsh::model::mesh::addNodes(1, 1, {2, 3}, {1., 0., 0., 0., 1., 0.});
   gmsh::model::mesh::addElementsByType(1, 1, {}, {1, 2, 2, 3, 3, 1});
   gmsh::model::mesh::addElementsByType(1, 2, {}, {1, 2, 3});
@@ -187,13 +189,7 @@ TEST(reparamOverlappingFaces, aFaceWhoseNodesTheOtherUsesKeepsItsMesh)
   // other face's triangles then use that face's nodes): face 1, tried
   // first, would delete the node face 2's triangles stand on; face 2 is
   // meshed with its input instead
-  gmsh::clear();
-  gmsh::model::add("sharedNode");
-  gmsh::model::addDiscreteEntity(0, 1);
-  gmsh::model::addDiscreteEntity(1, 1, {1, 1});
-  gmsh::model::addDiscreteEntity(2, 1, {1});
-  gmsh::model::addDiscreteEntity(2, 2, {1});
-  gmsh::model::mesh::addNodes(0, 1, {1}, {0., 0., 0.});
+  twoFacesOnALoop("sharedNode");
   gmsh::model::mesh::addNodes(1, 1, {2, 3, 4},
                               {1., 0., 0., 1., 1., 0., 0., 1., 0.});
   gmsh::model::mesh::addNodes(2, 1, {5}, {0.5, 0.5, 0.});
