@@ -398,8 +398,9 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
 
   for(const layoutSplit &s : layout.splits)
     Msg::Info("Reparam: - level %d part of %lu triangles split in %lu parts "
-              "because %s%s",
+              "because %s%s%s",
               s.depth, s.triangles, s.parts, s.reason.c_str(),
+              s.atFailure ? " (cut where its maps fail)" : "",
               s.movedFans ? (" (the cut moved off " +
                              std::to_string(s.movedFans) + " pinched nodes)")
                               .c_str() :

@@ -199,15 +199,18 @@ namespace {
   // first of the other, else between the middles of their triangles).
   // Of those leaving at least a tenth of the area on each side and at most
   // twice as long for the area they separate as `fallback`'s, the one of
-  // smallest ratio; `fallback` without any (a level cutting a sliver off
-  // around the failure leaves a face smaller than the mesh, a long cut
+  // smallest ratio (`found`); `fallback` without any (a level cutting a sliver
+  // off around the failure leaves a face smaller than the mesh, a long cut
   // pinches and leaves parts that fail again, and where the maps fail all
   // along a part that winds around, any level does).
-  std::size_t
-  levelAtFailure(const layoutMesh &mesh, const std::vector<int> &part,
-                 const std::vector<int> &order, const partCheck &check,
-                 const std::vector<double> &ratio, std::size_t fallback)
+  std::size_t levelAtFailure(const layoutMesh &mesh,
+                             const std::vector<int> &part,
+                             const std::vector<int> &order,
+                             const partCheck &check,
+                             const std::vector<double> &ratio,
+                             std::size_t fallback, bool &found)
   {
+    found = false;
     std::vector<std::array<std::size_t, 2> > levels;
     for(const auto &r : fanRanges(mesh, part, order, check.cutThrough))
       if(r[0] < r[1]) levels.push_back({{r[0], r[1]}});
@@ -241,6 +244,7 @@ namespace {
         if(ratio[k] < bestRatio && ratio[k] <= longest) {
           best = k;
           bestRatio = ratio[k];
+          found = true;
         }
     return best;
   }
@@ -250,7 +254,8 @@ namespace {
 std::vector<char> bisectPart(const layoutMesh &mesh,
                              const triangleAdjacency &adjacency,
                              const std::vector<int> &part,
-                             std::size_t coarseNodes, const partCheck &check)
+                             std::size_t coarseNodes, const partCheck &check,
+                             bool *atFailure)
 {
   const std::size_t n = part.size();
   std::vector<char> side(n, 0);
@@ -304,8 +309,10 @@ std::vector<char> bisectPart(const layoutMesh &mesh,
       best = k;
     }
   }
+  bool found = false;
   if(!check.cutThrough.empty() || !check.cutApart.empty())
-    best = levelAtFailure(mesh, part, order, check, ratio, best);
+    best = levelAtFailure(mesh, part, order, check, ratio, best, found);
+  if(atFailure) *atFailure = found;
   for(std::size_t k = 0; k <= best; k++) side[order[k]] = 1;
   return side;
 }

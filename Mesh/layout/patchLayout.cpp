@@ -122,9 +122,9 @@ namespace {
       out.kept = true;
       return out;
     }
-    side =
-      bisectPart(mesh, adjacency, part.triangles,
-                 out.check.bySize ? parameters.coarseCutNodes : 0, out.check);
+    side = bisectPart(mesh, adjacency, part.triangles,
+                      out.check.bySize ? parameters.coarseCutNodes : 0,
+                      out.check, &out.record.atFailure);
     out.record.movedFans = unpinchCut(mesh, adjacency, part.triangles, side);
     cutInTwo(mesh, adjacency, part, side, out);
     return out;

@@ -80,6 +80,8 @@ struct layoutSplit {
   // fans of triangles moved across the cut where it pinched a side
   // (unpinchCut.h)
   std::size_t movedFans = 0;
+  // cut where its maps fail (partCheck::cutThrough, cutApart)
+  bool atFailure = false;
 };
 
 struct layoutResult {
@@ -131,17 +133,18 @@ int mergeNoisePatches(const layoutMesh &mesh,
 // coarseNodes > 0: a part of more than twice as many triangles gets the
 // Fiedler vector of a graph of about coarseNodes clusters of its
 // triangles, smoothed on its own graph (the eigensolver's cost grows
-// faster than the graph: a cut where the cut's place matters less)
+// faster than the graph: a cut where the cut's place matters less).
 // `check`'s places where the part's maps fail (partCheck::cutThrough,
-// cutApart), if any: the level is one whose cut goes through one of those
-// nodes or between the nodes of one of those pairs (a fold about one node
-// stays whole in one half of a cut elsewhere, refused for the same reason
-// level after level)
-std::vector<char> bisectPart(const layoutMesh &mesh,
-                             const triangleAdjacency &adjacency,
-                             const std::vector<int> &part,
-                             std::size_t coarseNodes = 0,
-                             const partCheck &check = partCheck());
+// cutApart), if any: the level is, of those whose cut goes through one of
+// those nodes or between the nodes of one of those pairs, leaving a tenth
+// of the area on each side and at most twice as long for its area as the
+// shortest level, the shortest (a fold about one node stays whole in one
+// half of a cut elsewhere, refused for the same reason level after level);
+// `atFailure` (if given): whether such a level was taken
+std::vector<char>
+bisectPart(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+           const std::vector<int> &part, std::size_t coarseNodes = 0,
+           const partCheck &check = partCheck(), bool *atFailure = nullptr);
 
 // The edge-connected components of a part (through manifold edges whose two
 // triangles are both in the part)

@@ -286,7 +286,10 @@ TEST(patchLayout, bisectionCutsWhereTheMapsFail)
   const int v = nodeAt(3.5, 0.5);
   ASSERT_GE(v, 0);
   failing.cutThrough = {v};
-  std::vector<char> side = bisectPart(mesh, adjacency, all, 0, failing);
+  bool atFailure = false;
+  std::vector<char> side =
+    bisectPart(mesh, adjacency, all, 0, failing, &atFailure);
+  EXPECT_TRUE(atFailure);
   std::array<int, 2> on = sidesAt(side, v);
   EXPECT_GT(on[0], 0);
   EXPECT_GT(on[1], 0);
@@ -305,7 +308,8 @@ TEST(patchLayout, bisectionCutsWhereTheMapsFail)
   partCheck far{false, "its conformal maps fold", false};
   far.cutThrough = {nodeAt(1., 0.5)};
   for(const partCheck &c : {far, partCheck()}) {
-    side = bisectPart(mesh, adjacency, all, 0, c);
+    side = bisectPart(mesh, adjacency, all, 0, c, &atFailure);
+    EXPECT_FALSE(atFailure);
     cutOf(mesh, adjacency, side, area);
     EXPECT_NEAR(std::min(area[0], area[1]), 5., 1e-12);
   }
@@ -340,8 +344,9 @@ TEST(patchLayout, aPartFailingAtANodeIsCutThroughItOnce)
     };
     layoutResult r = computePatchLayout(mesh, layoutParameters(), verify);
     if(tell) {
-      EXPECT_EQ(r.splits.size(), 1u);
+      ASSERT_EQ(r.splits.size(), 1u);
       EXPECT_EQ(r.numPatches, 2);
+      EXPECT_TRUE(r.splits[0].atFailure);
     }
     else
       EXPECT_GE(r.splits.size(), 3u);
