@@ -235,6 +235,14 @@ namespace {
   // filling adds)
   mapFailurePlace failurePlace(const trianglePatch &p, const parametrization &m)
   {
+    mapFailurePlace place;
+    const auto &attempts = m.result.attempts;
+    bool failed = false;
+    for(std::size_t a = 0; a < attempts.size(); a++)
+      failed |=
+        (int)a != m.result.chosen &&
+        !(attempts[a].failedNodes.empty() && attempts[a].foldPairs.empty());
+    if(!failed) return place; // (most parts: no index to build)
     std::vector<int> nodeOf(p.canonical.size(), -1);
     for(std::size_t i = 0; i < p.canonical.size(); i++)
       if(p.canonical[i] >= 0 && p.canonical[i] < (int)nodeOf.size())
@@ -244,8 +252,6 @@ namespace {
                p.nodes[nodeOf[n]] :
                nullptr;
     };
-    mapFailurePlace place;
-    const auto &attempts = m.result.attempts;
     for(std::size_t a = 0; a < attempts.size(); a++) {
       if((int)a == m.result.chosen) continue;
       for(int n : attempts[a].failedNodes)

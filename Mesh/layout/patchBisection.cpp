@@ -211,19 +211,30 @@ namespace {
                              std::size_t fallback, bool &found)
   {
     found = false;
-    std::vector<std::array<std::size_t, 2> > levels;
-    for(const auto &r : fanRanges(mesh, part, order, check.cutThrough))
-      if(r[0] < r[1]) levels.push_back({{r[0], r[1]}});
-    std::vector<int> paired;
+    if(fallback >= ratio.size()) return fallback;
+    // the fans of every node named, in one pass over the part
+    std::vector<int> nodes(check.cutThrough);
     for(const auto &pr : check.cutApart)
-      paired.insert(paired.end(), {pr[0], pr[1]});
-    std::sort(paired.begin(), paired.end());
-    paired.erase(std::unique(paired.begin(), paired.end()), paired.end());
-    const auto pairedRanges = fanRanges(mesh, part, order, paired);
+      nodes.insert(nodes.end(), {pr[0], pr[1]});
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    const auto ranges = fanRanges(mesh, part, order, nodes);
     auto rangeOf = [&](int node) {
-      return pairedRanges[std::lower_bound(paired.begin(), paired.end(), node) -
-                          paired.begin()];
+      return ranges[std::lower_bound(nodes.begin(), nodes.end(), node) -
+                    nodes.begin()];
     };
+    // the levels [from, to) of each place, marked by their differences
+    std::vector<int> marks(ratio.size() + 1, 0);
+    auto mark = [&](std::size_t from, std::size_t to) {
+      to = std::min(to, ratio.size());
+      if(from >= to) return;
+      marks[from]++;
+      marks[to]--;
+    };
+    for(int v : check.cutThrough) {
+      const auto r = rangeOf(v);
+      mark(r[0], r[1]);
+    }
     for(const auto &pr : check.cutApart) {
       std::array<std::size_t, 2> a = rangeOf(pr[0]), b = rangeOf(pr[1]);
       if(a[0] > a[1] || b[0] > b[1]) continue; // not on the part
@@ -231,21 +242,22 @@ namespace {
       // every triangle of one before every triangle of the other, else
       // between the middles of their triangles
       if(a[1] < b[0])
-        levels.push_back({{a[1], b[0]}});
-      else if((a[0] + a[1]) / 2 < (b[0] + b[1]) / 2)
-        levels.push_back({{(a[0] + a[1]) / 2, (b[0] + b[1]) / 2}});
+        mark(a[1], b[0]);
+      else
+        mark((a[0] + a[1]) / 2, (b[0] + b[1]) / 2);
     }
-    if(fallback >= ratio.size()) return fallback;
     const double longest = 2. * ratio[fallback];
     std::size_t best = fallback;
     double bestRatio = std::numeric_limits<double>::max();
-    for(const auto &l : levels)
-      for(std::size_t k = l[0]; k < l[1] && k < ratio.size(); k++)
-        if(ratio[k] < bestRatio && ratio[k] <= longest) {
-          best = k;
-          bestRatio = ratio[k];
-          found = true;
-        }
+    int inside = 0;
+    for(std::size_t k = 0; k < ratio.size(); k++) {
+      inside += marks[k];
+      if(inside > 0 && ratio[k] < bestRatio && ratio[k] <= longest) {
+        best = k;
+        bestRatio = ratio[k];
+        found = true;
+      }
+    }
     return best;
   }
 

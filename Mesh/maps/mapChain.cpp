@@ -100,19 +100,20 @@ checkedMap runMapChain(const discretePatch &patch,
       recordFailure(patch, report, attempt);
     }
     attempt.checkTime = wallSeconds() - t1;
-    result.attempts.push_back(attempt);
+    result.attempts.push_back(std::move(attempt));
+    const mapAttempt &made = result.attempts.back();
     if(!map.error.ok()) continue;
     // a one-to-one result beats any other; among them, fewer degenerate
     // triangles; without any, the last map that worked
     const bool better =
-      attempt.bijective() ?
-        (!result.bijective || attempt.degenerateAfter < fewestDegenerate) :
+      made.bijective() ?
+        (!result.bijective || made.degenerateAfter < fewestDegenerate) :
         !result.bijective;
     if(better) {
       result.map = std::move(map);
       result.chosen = (int)s;
-      result.bijective = attempt.bijective();
-      if(result.bijective) fewestDegenerate = attempt.degenerateAfter;
+      result.bijective = made.bijective();
+      if(result.bijective) fewestDegenerate = made.degenerateAfter;
     }
     if(result.bijective && fewestDegenerate == 0) break;
   }
