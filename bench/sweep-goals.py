@@ -3,7 +3,10 @@
 table (REPARAM_COVERAGE_SIZES="0.7 1 1.4", with or without CGAL's rows):
 per class, size factor and remesher, how many meshes are whole, have no
 element against the input and meet the class's quality goal; then the
-meshes Reparam leaves short of it.
+meshes Reparam leaves short of it. A CAD part meets it with a kappa mean
+of 0.93, or of 0.93 off the surfaces the report names as narrower than a
+quarter of the size (the issue: "or the report names the input feature
+that forbids it"; the column `kappa mean off narrow surfaces`).
 
 usage: bench/sweep-goals.py RESULTS.md [CGAL-RESULTS.md]
 (the second file: take CGAL's rows from there, Reparam's from the first)
@@ -59,7 +62,10 @@ def meets_goal(cls, row):
     if None in (kmin, kmean, tau, ratio):
         return False
     if cls == "CAD":
-        return kmean >= 0.93
+        # or the report names the input's surfaces that forbid it (narrower
+        # than a quarter of the size) and the others reach it
+        off = number(row.get("kappa mean off narrow surfaces", "-"))
+        return kmean >= 0.93 or (off is not None and off >= 0.93)
     if cls == "smooth":
         return kmin >= 0.5 and kmean >= 0.97 and tau >= 90
     return tau >= 88 and kmin >= 0.3 and abs(ratio - 1) <= 0.15
