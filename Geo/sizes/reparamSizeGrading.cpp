@@ -40,9 +40,34 @@ namespace {
   // the nodes smaller than the size it finds
   const double nearlyTheSize = 0.9;
 
+  // The points embedded in gf (the tips Reparam keeps as nodes) closer
+  // than the size asked to another one, with that distance: the triangles
+  // between two such tips are that small, or thin (bench/README.md, "Sizes
+  // from the curves"). Not below a twentieth of the size, like the tips
+  // near curves
+  void closeTips(GFace *gf, std::vector<SPoint3> &sources,
+                 std::vector<double> &sizes)
+  {
+    std::vector<SPoint3> tips;
+    for(GVertex *gv : gf->embeddedVertices())
+      tips.push_back(SPoint3(gv->x(), gv->y(), gv->z()));
+    for(std::size_t i = 0; i < tips.size(); i++) {
+      double nearest = -1.;
+      for(std::size_t j = 0; j < tips.size(); j++) {
+        const double d = tips[i].distance(tips[j]);
+        if(j != i && d > 0. && (nearest < 0. || d < nearest)) nearest = d;
+      }
+      const SPoint3 &p = tips[i];
+      const double size = BGM_MeshSize(gf, 0., 0., p.x(), p.y(), p.z());
+      if(nearest <= 0. || nearest >= nearlyTheSize * size) continue;
+      sources.push_back(p);
+      sizes.push_back(std::max(nearest, 0.05 * size));
+    }
+  }
+
   // The nodes of gf's curves (embedded ones too) whose shortest segment is
   // shorter than the size asked there, with that length (Gmsh's size of a
-  // boundary node, meshGFace.cpp)
+  // boundary node, meshGFace.cpp), and its close tips (above)
   std::unique_ptr<gradedBoundarySize> boundarySizes(GFace *gf, double gradient)
   {
     std::map<MVertex *, int> index;
@@ -75,6 +100,7 @@ namespace {
       small.push_back(p);
       sizes.push_back(shortest[i]);
     }
+    closeTips(gf, small, sizes);
     return std::unique_ptr<gradedBoundarySize>(
       new gradedBoundarySize(small, sizes, gradient, reach));
   }

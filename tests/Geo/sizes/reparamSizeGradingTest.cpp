@@ -388,3 +388,59 @@ TEST(reparamSizeGrading, aStripNarrowerThanTheSizeGetsSizesOfItsWidth)
   EXPECT_GT(strips.second, 60u);
   EXPECT_LT(strips.second, 90u);
 }
+
+namespace {
+
+  // The worst kappa of the triangles at the two points embedded 0.03 apart
+  // in the unit square's middle (tips kept as nodes), meshed at 0.1 with
+  // `gradient`, and their longest edge
+  void meshAroundCloseTips(double gradient, double &worst, double &longest)
+  {
+    squareWithAShortCurve();
+    for(int k = 0; k < 2; k++) {
+      gmsh::model::addDiscreteEntity(0, 10 + k);
+      gmsh::model::mesh::addNodes(0, 10 + k, {100000u + k},
+                                  {0.5 + 0.03 * k, 0.5, 0.});
+    }
+    gmsh::model::mesh::embed(0, {10, 11}, 2, 1);
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
+    gmsh::model::mesh::generate(2);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+    worst = 1.;
+    longest = 0.;
+    GModel *m = GModel::current();
+    for(MTriangle *t : m->getFaceByTag(1)->triangles) {
+      bool atTip = false;
+      for(int j = 0; j < 3; j++) {
+        const SPoint3 p = t->getVertex(j)->point();
+        atTip |=
+          std::fabs(p.y() - 0.5) < 1e-12 &&
+          (std::fabs(p.x() - 0.5) < 1e-12 || std::fabs(p.x() - 0.53) < 1e-12);
+      }
+      if(!atTip) continue;
+      worst = std::min(worst, triangleKappa(t->getVertex(0)->point(),
+                                            t->getVertex(1)->point(),
+                                            t->getVertex(2)->point()));
+      for(int j = 0; j < 3; j++)
+        longest = std::max(longest, t->getVertex(j)->point().distance(
+                                      t->getVertex((j + 1) % 3)->point()));
+    }
+  }
+
+} // namespace
+
+TEST(reparamSizeGrading, twoTipsCloseTogetherGetTrianglesOfTheirDistance)
+{
+  // two tips a third of the size apart: the face's sizes grow from their
+  // distance, small triangles around them (without: worst kappa 0.63 there,
+  // edges of 0.10; Gmsh's own sizes, gradient 0: 0.85, 0.078)
+  double worst = 0., longest = 0.;
+  meshAroundCloseTips(0.5, worst, longest);
+  EXPECT_GT(worst, 0.75);
+  EXPECT_LT(longest, 0.07);
+  printf("at the tips: worst kappa %g, longest edge %g\n", worst, longest);
+}
