@@ -172,8 +172,9 @@ def read_msh_surface(path):
     return elements
 
 
-def read_msh_nodes(path):
-    """Coordinates of the nodes of an ASCII MSH 4.1 file by tag."""
+def read_msh_nodes(path, dimensions=None):
+    """Coordinates of the nodes of an ASCII MSH 4.1 file by tag; with a
+    dict `dimensions`, also the dimension of the entity each is on."""
     with open(path) as f:
         lines = iter(f.read().splitlines())
     nodes = {}
@@ -182,10 +183,13 @@ def read_msh_nodes(path):
             continue
         blocks = int(next(lines).split()[0])
         for _ in range(blocks):
-            count = int(next(lines).split()[3])
+            block = next(lines).split()
+            count = int(block[3])
             tags = [int(next(lines)) for _ in range(count)]
             for tag in tags:
                 nodes[tag] = tuple(float(w) for w in next(lines).split()[:3])
+                if dimensions is not None:
+                    dimensions[tag] = int(block[0])
     return nodes
 
 

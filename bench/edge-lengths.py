@@ -21,25 +21,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import coverage  # noqa: E402
 
 
-def node_dimensions(path):
-    """The dimension of the entity each node of an ASCII MSH 4.1 file is on."""
-    with open(path) as f:
-        lines = iter(f.read().splitlines())
-    dims = {}
-    for line in lines:
-        if line.strip() != "$Nodes":
-            continue
-        blocks = int(next(lines).split()[0])
-        for _ in range(blocks):
-            dim, _tag, _parametric, count = (int(w) for w in next(lines).split())
-            tags = [int(next(lines)) for _ in range(count)]
-            for _ in range(count):
-                next(lines)
-            for tag in tags:
-                dims[tag] = dim
-    return dims
-
-
 def deficit(length):
     return length - 1.0 if length < 1.0 else 1.0 / length - 1.0
 
@@ -48,8 +29,8 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     path, size = sys.argv[1], float(sys.argv[2])
-    nodes = coverage.read_msh_nodes(path)
-    dims = node_dimensions(path)
+    dims = {}
+    nodes = coverage.read_msh_nodes(path, dims)
     edges = set()
     for t in coverage.as_triangles(coverage.read_msh_surface(path)):
         for j in range(3):

@@ -48,6 +48,19 @@ TEST(gradedBoundarySize, shortestSegmentAtEachNode)
 
 namespace {
 
+  // gmsh::model::mesh::generate(dim) at a uniform `size` with
+  // Mesh.CompoundMeshSizeGradient = gradient, the options reset after
+  void generateAt(int dim, double size, double gradient)
+  {
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+    gmsh::model::mesh::generate(dim);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+  }
+
   struct meshedSquare {
     std::size_t triangles = 0;
     double worstKappa = 1.;
@@ -56,13 +69,7 @@ namespace {
   meshedSquare meshSquare(double gradient, double size)
   {
     squareWithAShortCurve();
-    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", size);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
-    gmsh::model::mesh::generate(2);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+    generateAt(2, size, gradient);
     meshedSquare r;
     GFace *gf = GModel::current()->getFaceByTag(1);
     for(MTriangle *t : gf->triangles) {
@@ -141,13 +148,7 @@ namespace {
       gmsh::model::mesh::addNodes(0, 10, {100000}, {0.5, 0.03, 0.});
       gmsh::model::mesh::embed(0, {10}, 2, 1);
     }
-    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
-    gmsh::model::mesh::generate(1);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+    generateAt(1, 0.1, gradient);
     std::vector<double> x;
     for(MLine *l : GModel::current()->getEdgeByTag(2)->lines)
       for(int k = 0; k < 2; k++) x.push_back(l->getVertex(k)->x());
@@ -403,13 +404,7 @@ namespace {
                                   {0.5 + 0.03 * k, 0.5, 0.});
     }
     gmsh::model::mesh::embed(0, {10, 11}, 2, 1);
-    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", gradient);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.1);
-    gmsh::model::mesh::generate(2);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-    gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
+    generateAt(2, 0.1, gradient);
     worst = 1.;
     longest = 0.;
     GModel *m = GModel::current();
