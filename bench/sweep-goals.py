@@ -94,7 +94,7 @@ def main(argv):
         c[3] += ok
         # issue 37: the layout at most 15 % of the recipe's CPU
         layout, cpu = number(r.get("layout (s)", "-")), number(r["CPU (s)"])
-        c[4] += layout is not None and cpu and layout <= 0.15 * cpu
+        c[4] += bool(layout is not None and cpu and layout <= 0.15 * cpu)
         if not ok and who == "Reparam":
             extra = "/x" + r["triangles / asked"] if cls == "segmentation" else ""
             short[key].append(
