@@ -17,6 +17,7 @@
 #include "SBoundingBox3d.h"
 #include "SVector3.h"
 #include "facetOrientation.h"
+#include "flatPieces.h"
 #include "reparamHooks.h"
 #include "reparamOptions.h"
 
@@ -27,6 +28,37 @@ namespace {
   bool finite(const SPoint3 &p)
   {
     return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+  }
+
+  // A solid's facets as node indices, its nodes and its repair
+  struct stlSolid {
+    std::vector<std::array<double, 3> > nodes;
+    std::vector<std::array<int, 3> > facets;
+    facetRepair repair;
+  };
+
+  // The corners of neighbouring facets are written with the same
+  // coordinates: nodes by exact coordinates (Gmsh merges them after)
+  void indexCorners(const std::vector<SPoint3> &corners, stlSolid &solid)
+  {
+    std::map<std::array<double, 3>, int> index;
+    solid.facets.resize(corners.size() / 3);
+    for(std::size_t i = 0; i < 3 * solid.facets.size(); i++) {
+      const std::array<double, 3> key = {
+        {corners[i].x(), corners[i].y(), corners[i].z()}};
+      auto it = index.insert(std::make_pair(key, (int)index.size()));
+      if(it.second) solid.nodes.push_back(key);
+      solid.facets[i / 3][i % 3] = it.first->second;
+    }
+  }
+
+  // The facets as the repair turns them (the volume of a piece needs them
+  // consistent)
+  void turnFacets(stlSolid &solid)
+  {
+    for(std::size_t f = 0; f < solid.facets.size(); f++)
+      if(solid.repair.reverse[f])
+        std::swap(solid.facets[f][1], solid.facets[f][2]);
   }
 
 } // namespace
@@ -97,45 +129,59 @@ std::size_t reparamOrientStlFacets(std::vector<std::vector<SPoint3> > &points)
 {
   if(getReparamOptions().parametrization == (int)compoundParametrization::gmsh)
     return 0;
-  std::size_t reversed = 0, dropped = 0, pillows = 0;
-  SPoint3 firstPillow;
-  for(std::vector<SPoint3> &solid : points) {
-    // the corners of neighbouring facets are written with the same
-    // coordinates: nodes by exact coordinates (Gmsh merges them after)
-    std::map<std::array<double, 3>, int> index;
-    std::vector<std::array<int, 3> > facets(solid.size() / 3);
-    for(std::size_t i = 0; i < 3 * facets.size(); i++) {
-      const std::array<double, 3> key = {
-        {solid[i].x(), solid[i].y(), solid[i].z()}};
-      facets[i / 3][i % 3] =
-        index.insert(std::make_pair(key, (int)index.size())).first->second;
-    }
-    const facetRepair r = orientFacets(facets);
-    if(!r.reversed && !r.dropped) continue;
-    if(!r.droppedPieces.empty() && !pillows)
-      firstPillow = solid[3 * r.droppedPieces[0]];
+  std::vector<stlSolid> solids(points.size());
+  double area = 0.;
+  std::size_t count = 0;
+  for(std::size_t s = 0; s < points.size(); s++) {
+    indexCorners(points[s], solids[s]);
+    solids[s].repair = orientFacets(solids[s].facets);
+    turnFacets(solids[s]);
+    std::size_t n = 0;
+    area +=
+      facetArea(solids[s].nodes, solids[s].facets, solids[s].repair.drop, n);
+    count += n;
+  }
+  // the layout's noise size: pieces smaller than it are below the input's
+  // own triangles
+  const double size =
+    getReparamOptions().noiseSize > 0. ?
+      getReparamOptions().noiseSize :
+      (count ? std::sqrt(4. * area / (std::sqrt(3.) * count)) : 0.);
+  std::size_t reversed = 0, dropped = 0, pieces = 0;
+  SPoint3 firstPiece;
+  for(std::size_t s = 0; s < points.size(); s++) {
+    stlSolid &solid = solids[s];
+    facetRepair &r = solid.repair;
+    const flatPieceDrop flat =
+      findFlatPieces(solid.nodes, solid.facets, r.drop, size);
+    if(!r.reversed && !r.dropped && !flat.dropped) continue;
+    std::vector<int> gone = r.droppedPieces;
+    gone.insert(gone.end(), flat.pieces.begin(), flat.pieces.end());
+    if(!gone.empty() && !pieces) firstPiece = points[s][3 * gone[0]];
     std::vector<SPoint3> kept;
-    kept.reserve(solid.size());
-    for(std::size_t f = 0; f < facets.size(); f++) {
-      if(r.drop[f]) continue;
-      const SPoint3 *c = &solid[3 * f];
+    kept.reserve(points[s].size());
+    for(std::size_t f = 0; f < solid.facets.size(); f++) {
+      if(r.drop[f] || flat.drop[f]) continue;
+      const SPoint3 *c = &points[s][3 * f];
       if(r.reverse[f])
         kept.insert(kept.end(), {c[0], c[2], c[1]});
       else
         kept.insert(kept.end(), {c[0], c[1], c[2]});
     }
-    solid.swap(kept);
+    points[s].swap(kept);
     reversed += r.reversed;
-    dropped += r.dropped;
-    pillows += r.droppedPieces.size();
+    dropped += r.dropped + flat.dropped;
+    pieces += gone.size();
   }
-  if(pillows)
+  if(pieces)
     Msg::Warning("Reparam: STL input repaired: %lu facets turned to agree "
-                 "with their neighbours, %lu facets repeating another's "
-                 "nodes dropped, with %lu pieces made only of facets lying "
-                 "on each other (no volume), the first at (%g, %g, %g)",
-                 reversed, dropped, pillows, firstPillow.x(), firstPillow.y(),
-                 firstPillow.z());
+                 "with their neighbours, %lu facets dropped (repeating "
+                 "another's nodes, or of %lu closed pieces without volume: "
+                 "facets lying on each other, or thinner than a hundredth of "
+                 "their extent and smaller than the input's triangles), the "
+                 "first piece at (%g, %g, %g)",
+                 reversed, dropped, pieces, firstPiece.x(), firstPiece.y(),
+                 firstPiece.z());
   else if(reversed || dropped)
     Msg::Warning("Reparam: STL input repaired: %lu facets turned to agree "
                  "with their neighbours, %lu facets repeating another's "

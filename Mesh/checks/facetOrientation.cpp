@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include "facetOrientation.h"
-#include "unionFind.h"
+#include "facetPieces.h"
 
 namespace reparam {
 
@@ -44,31 +44,6 @@ namespace {
     return first;
   }
 
-  // The connected pieces of the non-degenerate facets through their edges
-  // (however many facets use an edge): a root facet per facet
-  std::vector<int> pieceRoots(const std::vector<std::array<int, 3> > &facets)
-  {
-    std::vector<std::pair<std::uint64_t, int> > edges;
-    edges.reserve(3 * facets.size());
-    for(std::size_t i = 0; i < facets.size(); i++) {
-      if(degenerate(facets[i])) continue;
-      for(int k = 0; k < 3; k++) {
-        const std::uint64_t a = (std::uint32_t)facets[i][k],
-                            b = (std::uint32_t)facets[i][(k + 1) % 3];
-        edges.push_back({std::min(a, b) << 32 | std::max(a, b), (int)i});
-      }
-    }
-    std::sort(edges.begin(), edges.end());
-    unionFind pieces(facets.size());
-    for(std::size_t i = 1; i < edges.size(); i++)
-      if(edges[i].first == edges[i - 1].first)
-        pieces.join(edges[i].second, edges[i - 1].second);
-    std::vector<int> root(facets.size());
-    for(std::size_t i = 0; i < facets.size(); i++)
-      root[i] = pieces.find((int)i);
-    return root;
-  }
-
   // The second of a set of facets with the same nodes is dropped, and a
   // piece made of such sets only (a pillow: no volume, every edge used
   // twice by the same nodes) whole: with one facet of each set kept it
@@ -80,7 +55,7 @@ namespace {
     std::vector<int> repeats(facets.size(), 0);
     for(std::size_t i = 0; i < facets.size(); i++)
       if(first[i] >= 0) repeats[first[i]]++;
-    const std::vector<int> root = pieceRoots(facets);
+    const std::vector<int> root = facetPieceRoots(facets);
     std::vector<char> onlyRepeated(facets.size(), 1);
     for(std::size_t i = 0; i < facets.size(); i++)
       if(first[i] >= 0 && repeats[first[i]] < 2) onlyRepeated[root[i]] = 0;

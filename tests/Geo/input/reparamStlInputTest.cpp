@@ -1,6 +1,7 @@
 // Reparam - an STL with NaN or infinite coordinates: its bad facets are
 // dropped with a warning instead of crashing Gmsh's reader
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -190,4 +191,65 @@ TEST(reparamStlInput, aFileOfZeroAreaFacetsIsAnError)
     error = error || l.find("the 2 facets of the STL file all have zero "
                             "area") != std::string::npos;
   EXPECT_TRUE(error);
+}
+
+namespace {
+
+  // An ASCII STL of an octahedron of half-axes r, r and r c around
+  // (x, 0, 0) per entry (x, r, c)
+  std::string octahedraStl(const std::string &name,
+                           const std::vector<std::array<double, 3> > &pieces)
+  {
+    const std::string file = std::string(::testing::TempDir()) + name;
+    FILE *fp = std::fopen(file.c_str(), "w");
+    std::fprintf(fp, "solid s\n");
+    for(const std::array<double, 3> &p : pieces) {
+      const double x = p[0], r = p[1], c = r * p[2];
+      const double ring[4][3] = {
+        {x + r, 0, 0}, {x, r, 0}, {x - r, 0, 0}, {x, -r, 0}};
+      const double top[3] = {x, 0, c}, bottom[3] = {x, 0, -c};
+      auto facet = [&](const double *a, const double *b, const double *d) {
+        std::fprintf(fp,
+                     "facet normal 0 0 1\nouter loop\nvertex %.17g %.17g "
+                     "%.17g\nvertex %.17g %.17g %.17g\nvertex %.17g %.17g "
+                     "%.17g\nendloop\nendfacet\n",
+                     a[0], a[1], a[2], b[0], b[1], b[2], d[0], d[1], d[2]);
+      };
+      for(int k = 0; k < 4; k++) {
+        facet(ring[k], ring[(k + 1) % 4], top);
+        facet(ring[(k + 1) % 4], ring[k], bottom);
+      }
+    }
+    std::fprintf(fp, "endsolid s\n");
+    std::fclose(fp);
+    return file;
+  }
+
+} // namespace
+
+TEST(reparamStlInput, aFlatClosedPieceSmallerThanTheFacetsIsDropped)
+{
+  // a round octahedron of radius 1 (facets' size 1.3) and a flat one of
+  // radius 0.1 a thousandth as thick: dropped whole, the round one kept
+  const std::string file =
+    octahedraStl("flat.stl", {{{0., 1., 1.}}, {{3., 0.1, 1e-3}}});
+  EXPECT_TRUE(mergeLogs(file, "0 facets turned to agree with their "
+                              "neighbours, 8 facets dropped (repeating "
+                              "another's nodes, or of 1 closed pieces"));
+  std::vector<std::size_t> tags, nodes;
+  gmsh::model::mesh::getElementsByType(2, tags, nodes);
+  EXPECT_EQ(tags.size(), 8u);
+  std::vector<std::size_t> nodeTags;
+  std::vector<double> xyz, uvw;
+  gmsh::model::mesh::getNodes(nodeTags, xyz, uvw);
+  for(std::size_t i = 0; i < xyz.size(); i += 3) EXPECT_LE(xyz[i], 1.);
+  // the same flat piece as large as the facets is the input's: kept
+  const std::string large =
+    octahedraStl("flatLarge.stl", {{{0., 1., 1.}}, {{3., 1., 1e-3}}});
+  EXPECT_FALSE(mergeLogs(large, "STL input repaired"));
+  // (getElementsByType fills vectors of the right size as they are)
+  tags.clear();
+  nodes.clear();
+  gmsh::model::mesh::getElementsByType(2, tags, nodes);
+  EXPECT_EQ(tags.size(), 16u);
 }
