@@ -9,7 +9,8 @@
 namespace reparam {
 
 std::vector<int> facetPieceRoots(const std::vector<std::array<int, 3> > &facets,
-                                 const std::vector<bool> *skip)
+                                 const std::vector<bool> *skip,
+                                 std::vector<char> *closed)
 {
   // edges as sorted keys, not a map: inputs of millions of facets
   std::vector<std::pair<std::uint64_t, int> > edges;
@@ -31,6 +32,15 @@ std::vector<int> facetPieceRoots(const std::vector<std::array<int, 3> > &facets,
       pieces.join(edges[i].second, edges[i - 1].second);
   std::vector<int> root(facets.size());
   for(std::size_t i = 0; i < facets.size(); i++) root[i] = pieces.find((int)i);
+  if(closed) {
+    closed->assign(facets.size(), 1);
+    for(std::size_t i = 0; i < edges.size();) {
+      std::size_t j = i;
+      while(j < edges.size() && edges[j].first == edges[i].first) j++;
+      if(j - i != 2) (*closed)[root[edges[i].second]] = 0;
+      i = j;
+    }
+  }
   return root;
 }
 

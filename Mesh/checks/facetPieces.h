@@ -12,9 +12,12 @@
 namespace reparam {
 
 // A root facet per facet (facets with a repeated node are pieces of their
-// own, and join none); facets skipped (skip[i], when given) join none either
+// own, and join none); facets skipped (skip[i], when given) join none
+// either. closed (when given), per root: whether every edge of the piece is
+// used by exactly two of its facets.
 std::vector<int> facetPieceRoots(const std::vector<std::array<int, 3> > &facets,
-                                 const std::vector<bool> *skip = nullptr);
+                                 const std::vector<bool> *skip = nullptr,
+                                 std::vector<char> *closed = nullptr);
 
 } // namespace reparam
 

@@ -53,6 +53,23 @@ TEST(facetPieces, piecesJoinThroughEdgesNotThroughSkippedFacets)
   }
 }
 
+TEST(facetPieces, aPieceIsClosedWhenEachEdgeHasTwoFacets)
+{
+  soup s;
+  addOctahedron(s, 1.);
+  addOctahedron(s, 1., 5.);
+  s.facets.pop_back(); // the second left open
+  std::vector<char> closed;
+  const std::vector<int> root = facetPieceRoots(s.facets, nullptr, &closed);
+  EXPECT_TRUE(closed[root[0]]);
+  EXPECT_FALSE(closed[root[8]]);
+  // skipping a facet of the first opens it
+  std::vector<bool> skip(s.facets.size(), false);
+  skip[3] = true;
+  const std::vector<int> without = facetPieceRoots(s.facets, &skip, &closed);
+  EXPECT_FALSE(closed[without[0]]);
+}
+
 TEST(flatPieces, aFlatClosedPieceSmallerThanTheSizeIsDroppedWhole)
 {
   soup s;
