@@ -29,6 +29,7 @@
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
 #include "reparamState.h"
+#include "reparamTrianglePatch.h"
 #include "triangleAdjacency.h"
 
 namespace reparam {
@@ -73,9 +74,8 @@ void areaAndBoundaryLength(const std::vector<SPoint3> &xyz,
                     .norm();
   }
   length = 0.;
-  for(const auto &e : edgeUsesOf(triangleNodes))
-    if(e.second == 1)
-      length += xyz[e.first.first].distance(xyz[e.first.second]);
+  for(const auto &e : edgesUsedOnce(triangleNodes))
+    length += xyz[e.first].distance(xyz[e.second]);
 }
 
 double boundaryLargeness(const std::vector<SPoint3> &xyz,
@@ -206,9 +206,10 @@ namespace {
 
   // The tests a part fails whatever its map, before the map (a solve of
   // seconds on a part of 100k triangles, on a scan of a million only to
-  // cut it: 40 s of the layout of a vessel's 964k triangles)
+  // cut it: 40 s of the layout of a vessel's 964k triangles); the patch the
+  // map takes is built for them (once for both)
   bool failsBeforeTheMap(const std::vector<MTriangle *> &triangles,
-                         partCheck &check)
+                         trianglePatch &patch, partCheck &check)
   {
     if(getReparamOptions().parametrization ==
        (int)compoundParametrization::gmsh)
@@ -228,7 +229,7 @@ namespace {
                largeness);
       check.reason = s;
     }
-    else if(!reparamHolesFillable(triangles))
+    else if(!reparamHolesFillable(patch = patchOfTriangles(triangles)))
       check.reason = "a hole of it cannot be filled";
     else
       return false;
@@ -246,9 +247,11 @@ partCheck reparamVerifyPart(const std::vector<MTriangle *> &triangles,
   std::vector<SPoint3> xyz;
   std::vector<int> nodes;
   partCheck check;
-  if(failsBeforeTheMap(triangles, check)) return check;
+  trianglePatch patch;
+  if(failsBeforeTheMap(triangles, patch, check)) return check;
   int done =
-    reparamTryParametrization(triangles, uv, xyz, nodes, check.reason, where);
+    reparamTryParametrization(triangles, uv, xyz, nodes, check.reason, where,
+                              patch.nodes.empty() ? nullptr : &patch);
   if(done <= 0) {
     check.ok = false;
     return check;

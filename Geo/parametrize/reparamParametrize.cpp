@@ -286,10 +286,12 @@ namespace {
   // The map of `triangles` as `r` asks for it: 1 done (outputs written,
   // `record` filled), -1 failed (outputs empty; why in r.failure and the
   // log), 0 with Gmsh's own map. `result` gets parametrize's result.
+  // `built`: patchOfTriangles(triangles) if the caller has it (taken).
   int mapTriangles(mapRequest &r, const std::vector<MTriangle *> &triangles,
                    std::vector<MVertex *> &nodes, std::vector<SPoint2> &uv,
                    std::vector<SPoint3> &xyz, std::vector<int> &tri,
-                   parametrizationRecord &record, parametrization &result)
+                   parametrizationRecord &record, parametrization &result,
+                   trianglePatch *built = nullptr)
   {
     r.failure.clear();
     const reparamOptions &options = getReparamOptions();
@@ -300,7 +302,7 @@ namespace {
     nodes.clear();
     if(triangles.empty()) return -1;
     const double t0 = TimeOfDay();
-    trianglePatch p = patchOfTriangles(triangles);
+    trianglePatch p = built ? std::move(*built) : patchOfTriangles(triangles);
     const double patchTime = TimeOfDay() - t0;
     // Gmsh's callers read the outputs whatever the result (the patch check
     // of ClassifySurfaces indexes the (u, v) by the triangles): they stay
@@ -343,14 +345,16 @@ void reparamForgetLayoutMaps() { lastLayout().maps.clear(); }
 int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<SPoint2> &uv,
                               std::vector<SPoint3> &xyz, std::vector<int> &tri,
-                              std::string &why, mapFailurePlace *where)
+                              std::string &why, mapFailurePlace *where,
+                              trianglePatch *patch)
 {
   std::vector<MVertex *> nodes;
   parametrizationRecord record;
   parametrization result;
   mapRequest r;
   r.caller = mapCaller::layout;
-  int done = mapTriangles(r, triangles, nodes, uv, xyz, tri, record, result);
+  int done =
+    mapTriangles(r, triangles, nodes, uv, xyz, tri, record, result, patch);
   if(done > 0 && !record.bijective) {
     why = "its map is not one-to-one";
     done = -1;
@@ -390,8 +394,13 @@ std::string reparamLastFailure(const GFace *gf)
 
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles)
 {
+  return !getReparamOptions().fillHoles ||
+         reparamHolesFillable(patchOfTriangles(triangles));
+}
+
+bool reparamHolesFillable(const trianglePatch &p)
+{
   if(!getReparamOptions().fillHoles) return true;
-  const trianglePatch p = patchOfTriangles(triangles);
   // an invalid patch is the maps' failure to tell; a planar one whose
   // projection is one-to-one is meshed on its plane with its holes (tested
   // only with holes: the layout asks of every part before its map)

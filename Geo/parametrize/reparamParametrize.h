@@ -18,6 +18,8 @@ class MVertex;
 
 namespace reparam {
 
+struct trianglePatch;
+
 // Drops the maps the patch layout kept for CreateGeometry (a new layout
 // starts without them)
 void reparamForgetLayoutMaps();
@@ -35,11 +37,14 @@ struct mapFailurePlace {
   // a node of each of two boundary edges whose images cross
   std::vector<std::array<MVertex *, 2> > apart;
 };
+// `patch`: patchOfTriangles(triangles) when the caller built it already
+// (taken from it), else built here.
 int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
                               std::vector<SPoint2> &uv,
                               std::vector<SPoint3> &xyz,
                               std::vector<int> &triangleNodes, std::string &why,
-                              mapFailurePlace *where = nullptr);
+                              mapFailurePlace *where = nullptr,
+                              trianglePatch *patch = nullptr);
 
 // Whether every hole of these triangles (inner boundary loop) can be
 // filled (Mesh/maps/holeFilling.h), as the parametrization fills them
@@ -48,6 +53,8 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
 // holes): false means
 // reparamTryParametrization fails for that reason, whatever its maps give
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles);
+// The same of their patch (Geo/parametrize/reparamTrianglePatch.h)
+bool reparamHolesFillable(const trianglePatch &patch);
 
 // Why gf's last parametrization failed (for the safety net's warning)
 std::string reparamLastFailure(const GFace *gf);

@@ -67,6 +67,30 @@ inline edgeUses edgeUsesOf(const std::vector<int> &triangleNodes)
   return uses;
 }
 
+// The edges of exactly one of the triangles (three nodes each, one after the
+// other), in the order edgeUses visits them: what edgeUsesOf(...) finds with
+// one use, by a sort of a flat array rather than a tree of nodes (the
+// layout asks it of every part, of up to a million triangles)
+inline std::vector<std::pair<int, int> >
+edgesUsedOnce(const std::vector<int> &triangleNodes)
+{
+  std::vector<std::pair<int, int> > all;
+  all.reserve(triangleNodes.size());
+  for(std::size_t i = 0; i + 2 < triangleNodes.size(); i += 3)
+    for(int k = 0; k < 3; k++)
+      all.push_back(
+        undirectedEdge(triangleNodes[i + k], triangleNodes[i + (k + 1) % 3]));
+  std::sort(all.begin(), all.end());
+  std::vector<std::pair<int, int> > once;
+  for(std::size_t i = 0; i < all.size();) {
+    std::size_t j = i + 1;
+    while(j < all.size() && all[j] == all[i]) j++;
+    if(j == i + 1) once.push_back(all[i]);
+    i = j;
+  }
+  return once;
+}
+
 } // namespace reparam
 
 #endif

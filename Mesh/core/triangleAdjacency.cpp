@@ -50,5 +50,24 @@ makeTriangleAdjacency(const std::vector<std::array<int, 3> > &triangles)
   adj.edgeStart.push_back((int)sides.size());
   return adj;
 }
-} // namespace reparam
 
+std::vector<std::array<int, 3> >
+partNeighbours(const triangleAdjacency &adjacency, const std::vector<int> &part,
+               std::size_t numTriangles)
+{
+  // the mesh's triangles by their index in the part: a scratch array per
+  // thread, all -1 between calls
+  thread_local std::vector<int> local;
+  if(local.size() < numTriangles) local.resize(numTriangles, -1);
+  for(std::size_t i = 0; i < part.size(); i++) local[part[i]] = (int)i;
+  std::vector<std::array<int, 3> > neighbours(part.size());
+  for(std::size_t i = 0; i < part.size(); i++)
+    for(int k = 0; k < 3; k++) {
+      const int t = part[i];
+      const int o = adjacency.across(adjacency.triangleEdges[t][k], t);
+      neighbours[i][k] = o < 0 ? -1 : local[o];
+    }
+  for(int t : part) local[t] = -1;
+  return neighbours;
+}
+} // namespace reparam

@@ -36,6 +36,15 @@ struct triangleAdjacency {
 triangleAdjacency
 makeTriangleAdjacency(const std::vector<std::array<int, 3> > &triangles);
 
+// For each triangle part[i] of a mesh of numTriangles triangles, the index
+// in `part` of the triangle across each of its edges (k: nodes k and k + 1),
+// -1 across a boundary or non-manifold edge or where that triangle is not
+// in the part. Costs the part's size, not the mesh's: the layout asks it of
+// parts of a few triangles on meshes of a million.
+std::vector<std::array<int, 3> >
+partNeighbours(const triangleAdjacency &adjacency, const std::vector<int> &part,
+               std::size_t numTriangles);
+
 } // namespace reparam
 
 #endif

@@ -41,20 +41,18 @@ namespace {
                           const triangleAdjacency &adjacency,
                           const std::vector<int> &part)
   {
-    std::vector<int> local(mesh.triangles.size(), -1);
-    for(std::size_t i = 0; i < part.size(); i++) local[part[i]] = (int)i;
+    const std::vector<std::array<int, 3> > across =
+      partNeighbours(adjacency, part, mesh.triangles.size());
     dualGraph g;
     g.incident.resize(part.size());
     for(std::size_t i = 0; i < part.size(); i++) {
       const int t = part[i];
       for(int k = 0; k < 3; k++) {
-        const int e = adjacency.triangleEdges[t][k];
-        const int n = adjacency.across(e, t);
-        if(n < 0 || local[n] < 0 || n < t) continue;
-        const auto &edge = adjacency.edges[e];
+        const int j = across[i][k];
+        if(j < 0 || part[j] < t) continue;
+        const auto &edge = adjacency.edges[adjacency.triangleEdges[t][k]];
         const double len = edgeLength(mesh, edge);
-        const double d = centroid(mesh, t).distance(centroid(mesh, n));
-        const int j = local[n];
+        const double d = centroid(mesh, t).distance(centroid(mesh, part[j]));
         g.incident[i].push_back((int)g.edges.size());
         g.incident[j].push_back((int)g.edges.size());
         g.edges.push_back({(int)i, j});
@@ -333,8 +331,8 @@ std::vector<std::vector<int> >
 partComponents(const triangleAdjacency &adjacency, const std::vector<int> &part,
                std::size_t numTriangles)
 {
-  std::vector<int> local(numTriangles, -1);
-  for(std::size_t i = 0; i < part.size(); i++) local[part[i]] = (int)i;
+  const std::vector<std::array<int, 3> > across =
+    partNeighbours(adjacency, part, numTriangles);
   std::vector<std::vector<int> > components;
   std::vector<char> seen(part.size(), 0);
   std::vector<int> stack;
@@ -346,13 +344,12 @@ partComponents(const triangleAdjacency &adjacency, const std::vector<int> &part,
     while(!stack.empty()) {
       const int i = stack.back();
       stack.pop_back();
-      const int t = part[i];
-      components.back().push_back(t);
+      components.back().push_back(part[i]);
       for(int k = 0; k < 3; k++) {
-        const int n = adjacency.across(adjacency.triangleEdges[t][k], t);
-        if(n < 0 || local[n] < 0 || seen[local[n]]) continue;
-        seen[local[n]] = 1;
-        stack.push_back(local[n]);
+        const int j = across[i][k];
+        if(j < 0 || seen[j]) continue;
+        seen[j] = 1;
+        stack.push_back(j);
       }
     }
   }

@@ -1,7 +1,6 @@
 // Reparam - optimal discrete parametrizations for Gmsh compound surfaces
 
 #include <algorithm>
-#include <unordered_map>
 #include "triangleAdjacency.h"
 #include "unpinchCut.h"
 
@@ -9,23 +8,36 @@ namespace reparam {
 
 namespace {
 
-  // The part's triangles by node: (node, index in the part), sorted, and
-  // each mesh triangle's index in the part
+  // The part's triangles around each of its nodes, nodes by increasing
+  // number, the triangles around one by increasing index in the part: the
+  // triangles at byNode[i] are at[start[i] .. start[i + 1])
   struct partAround {
-    std::unordered_map<int, int> local;
-    std::vector<std::pair<int, int> > byNode;
+    std::vector<int> nodes, start, at;
   };
 
   partAround indexPart(const layoutMesh &mesh, const std::vector<int> &part)
   {
     partAround a;
-    a.local.reserve(part.size());
-    a.byNode.reserve(3 * part.size());
-    for(std::size_t i = 0; i < part.size(); i++) {
-      a.local[part[i]] = (int)i;
-      for(int n : mesh.triangles[part[i]]) a.byNode.push_back({n, (int)i});
-    }
-    std::sort(a.byNode.begin(), a.byNode.end());
+    a.nodes.reserve(3 * part.size());
+    for(int t : part)
+      for(int n : mesh.triangles[t]) a.nodes.push_back(n);
+    std::sort(a.nodes.begin(), a.nodes.end());
+    a.nodes.erase(std::unique(a.nodes.begin(), a.nodes.end()), a.nodes.end());
+    // each node's place among them, in a scratch array per thread (all -1
+    // between calls) rather than a search
+    thread_local std::vector<int> place;
+    if(place.size() < mesh.points.size()) place.resize(mesh.points.size(), -1);
+    for(std::size_t i = 0; i < a.nodes.size(); i++) place[a.nodes[i]] = (int)i;
+    a.start.assign(a.nodes.size() + 1, 0);
+    for(int t : part)
+      for(int n : mesh.triangles[t]) a.start[place[n] + 1]++;
+    for(std::size_t i = 0; i < a.nodes.size(); i++)
+      a.start[i + 1] += a.start[i];
+    std::vector<int> fill(a.start.begin(), a.start.end() - 1);
+    a.at.resize(3 * part.size());
+    for(std::size_t i = 0; i < part.size(); i++)
+      for(int n : mesh.triangles[part[i]]) a.at[fill[place[n]]++] = (int)i;
+    for(int n : a.nodes) place[n] = -1;
     return a;
   }
 
@@ -33,8 +45,8 @@ namespace {
   public:
     cutSides(const layoutMesh &mesh, const triangleAdjacency &adjacency,
              const std::vector<int> &part, std::vector<char> &side)
-      : _mesh(mesh), _adjacency(adjacency), _part(part), _side(side),
-        _around(indexPart(mesh, part))
+      : _mesh(mesh), _part(part), _side(side), _around(indexPart(mesh, part)),
+        _across(partNeighbours(adjacency, part, mesh.triangles.size()))
     {
     }
 
@@ -42,27 +54,23 @@ namespace {
     std::size_t round()
     {
       std::size_t moved = 0;
-      anyNode([&](int v, const std::vector<int> &at) {
-        for(char s = 0; s < 2; s++) moved += unpinch(v, at, s);
-        return false;
-      });
+      for(std::size_t i = 0; i < _around.nodes.size(); i++)
+        for(char s = 0; s < 2; s++) moved += unpinch(i, s);
       return moved;
     }
 
     // A node where the part's triangles of side s make several fans, and
     // those fans; -1 and none when there is no such node
-    int pinchedNode(char s, std::vector<std::vector<int> > &fansThere) const
+    int pinchedNode(char s, std::vector<std::vector<int> > &fansThere)
     {
-      int node = -1;
-      anyNode([&](int v, const std::vector<int> &at) {
-        if(at.size() < 2) return false;
-        fansThere = fans(v, at, s);
-        if(fansThere.size() < 2) return false;
-        node = v;
-        return true;
-      });
-      if(node < 0) fansThere.clear();
-      return node;
+      fansThere.clear();
+      for(std::size_t i = 0; i < _around.nodes.size(); i++) {
+        if(_around.start[i + 1] - _around.start[i] < 2) continue;
+        if(labelFans(i, s) < 2) continue;
+        fansThere = fans();
+        return _around.nodes[i];
+      }
+      return -1;
     }
 
     // Every triangle of the part on the side of the seed it is fewest
@@ -76,7 +84,7 @@ namespace {
       for(std::size_t n = 0; n < front.size(); n++) {
         const int t = front[n];
         for(int k = 0; k < 3; k++) {
-          const int o = across(t, _adjacency.triangleEdges[_part[t]][k]);
+          const int o = _across[t][k];
           if(o < 0 || reached[o]) continue;
           reached[o] = 1;
           _side[o] = _side[t];
@@ -86,57 +94,49 @@ namespace {
     }
 
   private:
-    // f(node, the part's triangles around it) for each node of the part in
-    // turn, until f returns true
-    template <class F> void anyNode(F f) const
+    // The fans of side s at the i-th node among the part's triangles around
+    // it (groups joined across the edges through the node), each triangle's
+    // in _label (_mine: those triangles, in the order of the part); returns
+    // their number. Labels in the order of their first triangle, each
+    // group grown breadth first in _order (see fans()).
+    int labelFans(std::size_t i, char s)
     {
-      const auto &byNode = _around.byNode;
-      for(std::size_t i = 0; i < byNode.size();) {
-        std::size_t j = i;
-        std::vector<int> at;
-        for(; j < byNode.size() && byNode[j].first == byNode[i].first; j++)
-          at.push_back(byNode[j].second);
-        if(f(byNode[i].first, at)) return;
-        i = j;
-      }
-    }
-
-    // The part's triangle across edge e of (part) triangle i, or -1
-    int across(int i, int e) const
-    {
-      const int o = _adjacency.across(e, _part[i]);
-      if(o < 0) return -1;
-      auto it = _around.local.find(o);
-      return it == _around.local.end() ? -1 : it->second;
-    }
-
-    // The fans of side s at node v among the part's triangles `at` around
-    // it: groups joined across the edges through v
-    std::vector<std::vector<int> > fans(int v, const std::vector<int> &at,
-                                        char s) const
-    {
-      std::vector<int> mine;
-      for(int i : at)
-        if(_side[i] == s) mine.push_back(i);
-      std::vector<int> label(mine.size(), -1);
-      std::vector<std::vector<int> > groups;
-      for(std::size_t a = 0; a < mine.size(); a++) {
-        if(label[a] >= 0) continue;
-        label[a] = (int)groups.size();
-        groups.push_back({mine[a]});
-        for(std::size_t n = 0; n < groups.back().size(); n++) {
-          const int t = groups.back()[n];
+      const int v = _around.nodes[i];
+      _mine.clear();
+      for(int k = _around.start[i]; k < _around.start[i + 1]; k++)
+        if(_side[_around.at[k]] == s) _mine.push_back(_around.at[k]);
+      _label.assign(_mine.size(), -1);
+      _order.clear();
+      int groups = 0;
+      for(std::size_t a = 0; a < _mine.size(); a++) {
+        if(_label[a] >= 0) continue;
+        _label[a] = groups;
+        _order.push_back((int)a);
+        for(std::size_t n = _order.size() - 1; n < _order.size(); n++) {
+          const int t = _mine[_order[n]];
+          const auto &tri = _mesh.triangles[_part[t]];
           for(int k = 0; k < 3; k++) {
-            const auto &tri = _mesh.triangles[_part[t]];
             if(tri[k] != v && tri[(k + 1) % 3] != v) continue;
-            const int o = across(t, _adjacency.triangleEdges[_part[t]][k]);
-            for(std::size_t b = 0; b < mine.size(); b++)
-              if(mine[b] == o && label[b] < 0) {
-                label[b] = label[a];
-                groups.back().push_back(o);
+            const int o = _across[t][k];
+            for(std::size_t b = 0; b < _mine.size(); b++)
+              if(_mine[b] == o && _label[b] < 0) {
+                _label[b] = groups;
+                _order.push_back((int)b);
               }
           }
         }
+        groups++;
+      }
+      return groups;
+    }
+
+    // The groups labelFans found, each in the order it grew
+    std::vector<std::vector<int> > fans() const
+    {
+      std::vector<std::vector<int> > groups;
+      for(int a : _order) {
+        if(_label[a] == (int)groups.size()) groups.emplace_back();
+        groups[_label[a]].push_back(_mine[a]);
       }
       return groups;
     }
@@ -145,16 +145,16 @@ namespace {
     {
       for(int t : fan)
         for(int k = 0; k < 3; k++) {
-          const int o = across(t, _adjacency.triangleEdges[_part[t]][k]);
+          const int o = _across[t][k];
           if(o >= 0 && _side[o] != s) return true;
         }
       return false;
     }
 
-    std::size_t unpinch(int v, const std::vector<int> &at, char s)
+    std::size_t unpinch(std::size_t i, char s)
     {
-      std::vector<std::vector<int> > f = fans(v, at, s);
-      if(f.size() < 2) return 0;
+      if(labelFans(i, s) < 2) return 0;
+      std::vector<std::vector<int> > f = fans();
       std::stable_sort(
         f.begin(), f.end(),
         [](const std::vector<int> &a, const std::vector<int> &b) {
@@ -170,10 +170,11 @@ namespace {
     }
 
     const layoutMesh &_mesh;
-    const triangleAdjacency &_adjacency;
     const std::vector<int> &_part;
     std::vector<char> &_side;
     partAround _around;
+    std::vector<std::array<int, 3> > _across;
+    std::vector<int> _mine, _label, _order;
   };
 
 } // namespace

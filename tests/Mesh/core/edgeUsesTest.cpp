@@ -59,3 +59,25 @@ TEST(edgeUses, gridHasItsBorderUsedOnce)
   // edges: 4 * 4 horizontal, 5 * 3 vertical, 12 diagonals
   EXPECT_EQ(once + twice, 43u);
 }
+
+TEST(edgeUses, edgesUsedOnceAreTheTreesOnesInItsOrder)
+{
+  // the fan with an edge of three triangles, a repeated triangle (its edges
+  // used twice) and a grid: the same edges, in the same order, as the
+  // count's edges of one use
+  std::vector<int> fan = {0, 1, 2, 0, 2, 3, 0, 3, 4, 2, 0, 5, 7, 8, 9, 9, 8, 7};
+  const testTriangulation grid = rectangleGrid(5, 4, 5., 4.);
+  std::vector<int> flat;
+  for(const auto &t : grid.triangles)
+    flat.insert(flat.end(), t.begin(), t.end());
+  for(const std::vector<int> &nodes : {fan, flat}) {
+    std::vector<std::pair<int, int> > expected;
+    for(const auto &e : edgeUsesOf(nodes))
+      if(e.second == 1) expected.push_back(e.first);
+    EXPECT_EQ(edgesUsedOnce(nodes), expected);
+  }
+  // 0-1, 1-2, 2-3, 3-4, 0-4, 0-5, 2-5
+  EXPECT_EQ(edgesUsedOnce(fan).size(), 7u);
+  EXPECT_EQ(edgesUsedOnce(flat).size(), 18u);
+  EXPECT_TRUE(edgesUsedOnce({}).empty());
+}

@@ -15,6 +15,7 @@
 #include "patchLayout.h"
 #include "reparamLayout.h"
 #include "reparamParametrize.h"
+#include "reparamTrianglePatch.h"
 #include "triangleAdjacency.h"
 
 using namespace reparam;
@@ -615,4 +616,33 @@ TEST(patchLayout, partsFailingWhateverTheirMapFailBeforeIt)
   // as without holes
   gmshTriangulation disk(polarDisk(6, 24));
   EXPECT_TRUE(reparamHolesFillable(disk.triangles));
+}
+
+TEST(patchLayout, aPatchBuiltForTheChecksServesTheMap)
+{
+  // the layout builds a part's patch once, for its holes' check and for its
+  // map: the map of the patch given is the map of the triangles, to the bit,
+  // and the patch is taken
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+  gmshTriangulation g(polarDiskWithHoles(8, 32, {{{3, 5, 4, 10}}}));
+  std::vector<SPoint2> uv[2];
+  std::vector<SPoint3> xyz[2];
+  std::vector<int> tri[2];
+  std::string why[2];
+  ASSERT_EQ(
+    reparamTryParametrization(g.triangles, uv[0], xyz[0], tri[0], why[0]), 1);
+  trianglePatch patch = patchOfTriangles(g.triangles);
+  EXPECT_TRUE(reparamHolesFillable(patch));
+  EXPECT_EQ(patch.patch.boundaryLoops.size(), 2u);
+  ASSERT_EQ(reparamTryParametrization(g.triangles, uv[1], xyz[1], tri[1],
+                                      why[1], nullptr, &patch),
+            1);
+  EXPECT_TRUE(patch.nodes.empty());
+  EXPECT_EQ(tri[1], tri[0]);
+  ASSERT_EQ(uv[1].size(), uv[0].size());
+  for(std::size_t i = 0; i < uv[0].size(); i++) {
+    EXPECT_EQ(uv[1][i].x(), uv[0][i].x());
+    EXPECT_EQ(uv[1][i].y(), uv[0][i].y());
+    EXPECT_EQ(xyz[1][i].distance(xyz[0][i]), 0.);
+  }
 }
