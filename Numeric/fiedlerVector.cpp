@@ -17,13 +17,14 @@ namespace {
     typedef double Scalar;
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > &factor;
     Eigen::Index n;
+    mutable Eigen::VectorXd b; // one right-hand side for every product
     Eigen::Index rows() const { return n; }
     Eigen::Index cols() const { return n; }
     void perform_op(const double *xIn, double *yOut) const
     {
       Eigen::Map<const Eigen::VectorXd> x(xIn, n);
       Eigen::Map<Eigen::VectorXd> y(yOut, n);
-      Eigen::VectorXd b = x.array() - x.mean();
+      b = x.array() - x.mean();
       y = factor.solve(b);
       y.array() -= y.mean();
     }
@@ -64,7 +65,7 @@ fiedlerResult fiedlerVector(int n, const std::vector<std::array<int, 2> > &edges
                                   "Laplacian factorization");
     return result;
   }
-  deflatedInverse op{factor, n};
+  deflatedInverse op{factor, n, Eigen::VectorXd(n)};
   // Each vector of the basis is a solve with the factor: on large graphs a
   // small basis (1 / lambda2 stands apart from 1 / lambda3). On small ones
   // the solves cost nothing, and where lambda2 is repeated (a tube) the

@@ -43,15 +43,17 @@ namespace {
     const Eigen::VectorXd &B;
     Eigen::VectorXd invSqrtD;
     Eigen::MatrixXcd kernel; // in y, orthonormal columns
-    mutable Eigen::VectorXcd work;
+    mutable Eigen::VectorXcd work, coefficients;
     mutable int solves = 0;
     Eigen::Index rows() const { return 2 * B.size(); }
     Eigen::Index cols() const { return 2 * B.size(); }
     // In the real view the kernel is spanned by its columns q and by i q:
     // their complex span, hence complex (not real) inner products
+    // (no temporary of the vector's size: a product per Lanczos step)
     template <class Vector> void project(Vector &&y) const
     {
-      y -= kernel * (kernel.adjoint() * y);
+      coefficients.noalias() = kernel.adjoint() * y;
+      y.noalias() -= kernel * coefficients;
     }
     // y = D^1/2 L^H P x
     Eigen::VectorXcd reduce(const Eigen::VectorXcd &x) const

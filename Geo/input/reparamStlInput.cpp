@@ -10,9 +10,9 @@
 // incomplete last facet (a file cut short) is dropped too, with a warning;
 // a file left without any facet, or with zero-area ones only, is an error.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include "GmshMessage.h"
 #include "SBoundingBox3d.h"
 #include "SVector3.h"
@@ -41,14 +41,36 @@ namespace {
   // coordinates: nodes by exact coordinates (Gmsh merges them after)
   void indexCorners(const std::vector<SPoint3> &corners, stlSolid &solid)
   {
-    std::map<std::array<double, 3>, int> index;
+    // the corners sorted by their coordinates (then by their place), equal
+    // ones together; nodes numbered in order of first appearance, with the
+    // coordinates of that appearance: a sort of a flat array, not a tree of
+    // a node per corner (a tenth of the reading of a large scan)
     solid.facets.resize(corners.size() / 3);
-    for(std::size_t i = 0; i < 3 * solid.facets.size(); i++) {
-      const std::array<double, 3> key = {
+    const std::size_t n = 3 * solid.facets.size();
+    auto key = [&corners](std::size_t i) {
+      return std::array<double, 3>{
         {corners[i].x(), corners[i].y(), corners[i].z()}};
-      auto it = index.insert(std::make_pair(key, (int)index.size()));
-      if(it.second) solid.nodes.push_back(key);
-      solid.facets[i / 3][i % 3] = it.first->second;
+    };
+    std::vector<int> order(n);
+    for(std::size_t i = 0; i < n; i++) order[i] = (int)i;
+    std::sort(order.begin(), order.end(), [&key](int a, int b) {
+      const std::array<double, 3> ka = key(a), kb = key(b);
+      return ka < kb || (!(kb < ka) && a < b);
+    });
+    // group[i]: the first corner (in the file) with i's coordinates
+    std::vector<int> first(n);
+    for(std::size_t k = 0; k < n; k++)
+      first[order[k]] = k && !(key(order[k - 1]) < key(order[k])) ?
+                          first[order[k - 1]] :
+                          order[k];
+    std::vector<int> node(n, -1);
+    for(std::size_t i = 0; i < n; i++) {
+      int &id = node[first[i]];
+      if(id < 0) {
+        id = (int)solid.nodes.size();
+        solid.nodes.push_back(key(i));
+      }
+      solid.facets[i / 3][i % 3] = id;
     }
   }
 

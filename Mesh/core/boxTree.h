@@ -24,7 +24,7 @@ template <int D> struct boxTree {
   std::vector<int> order; // the items, each leaf's together
 
   // items 0 .. n - 1; box(i, lo, hi) gives item i's box, centroid(i, k) the
-  // k-th coordinate of its centroid
+  // k-th coordinate of its centroid (each asked once per item)
   template <class Box, class Centroid>
   void build(int n, int leafSize, const Box &box, const Centroid &centroid)
   {
@@ -32,14 +32,24 @@ template <int D> struct boxTree {
     order.resize(n);
     for(int i = 0; i < n; i++) order[i] = i;
     if(!n) return;
+    // every level reads every item's box and centroid: computed once
+    // (asked of the item at each level, they were most of the build)
+    _boxes.resize(2 * D * (std::size_t)n);
+    _centroids.resize(D * (std::size_t)n);
+    for(int i = 0; i < n; i++) {
+      box(i, &_boxes[2 * D * i], &_boxes[2 * D * i + D]);
+      for(int k = 0; k < D; k++) _centroids[D * i + k] = centroid(i, k);
+    }
     nodes.reserve(2 * n / leafSize + 2);
-    split(0, n, leafSize, box, centroid);
+    split(0, n, leafSize);
+    std::vector<double>().swap(_boxes);
+    std::vector<double>().swap(_centroids);
   }
 
 private:
-  template <class Box, class Centroid>
-  int split(int first, int count, int leafSize, const Box &box,
-            const Centroid &centroid)
+  std::vector<double> _boxes, _centroids; // during the build
+
+  int split(int first, int count, int leafSize)
   {
     const int index = (int)nodes.size();
     nodes.push_back(node());
@@ -49,14 +59,13 @@ private:
     std::fill(hi, hi + D, -1e300);
     std::fill(chi, chi + D, -1e300);
     for(int i = first; i < first + count; i++) {
-      double l[D], h[D];
-      box(order[i], l, h);
+      const double *l = &_boxes[2 * D * order[i]], *h = l + D;
+      const double *c = &_centroids[D * order[i]];
       for(int k = 0; k < D; k++) {
         lo[k] = std::min(lo[k], l[k]);
         hi[k] = std::max(hi[k], h[k]);
-        const double c = centroid(order[i], k);
-        clo[k] = std::min(clo[k], c);
-        chi[k] = std::max(chi[k], c);
+        clo[k] = std::min(clo[k], c[k]);
+        chi[k] = std::max(chi[k], c[k]);
       }
     }
     std::copy(lo, lo + D, nodes[index].lo);
@@ -70,13 +79,13 @@ private:
     for(int k = 1; k < D; k++)
       if(chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
     const int half = count / 2;
+    const double *centroids = _centroids.data();
     std::nth_element(order.begin() + first, order.begin() + first + half,
                      order.begin() + first + count, [&](int a, int b) {
-                       return centroid(a, axis) < centroid(b, axis);
+                       return centroids[D * a + axis] < centroids[D * b + axis];
                      });
-    const int left = split(first, half, leafSize, box, centroid);
-    const int right =
-      split(first + half, count - half, leafSize, box, centroid);
+    const int left = split(first, half, leafSize);
+    const int right = split(first + half, count - half, leafSize);
     nodes[index].left = left;
     nodes[index].right = right;
     return index;

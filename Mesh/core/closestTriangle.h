@@ -69,6 +69,9 @@ private:
   // the box of triangle _tree.order[i] at 6 i (low corner, then high): a
   // leaf's triangles farther than the best distance are skipped by it
   std::vector<double> _triangleBoxes;
+  // the corners of triangle _tree.order[i] at 3 i: a leaf's triangles read
+  // one after the other, not through their nodes
+  std::vector<SPoint3> _corners;
   double distanceTo(int t, const SPoint3 &p, SPoint3 &closest) const;
 };
 

@@ -51,8 +51,16 @@ namespace {
     for(const SPoint3 &p : corners) g += p;
     g *= 1. / N;
     SVector3 sum = unitNormal(atCentroid.triangle);
-    for(const SPoint3 &p : corners) {
-      SPoint3 half = (g + p) * 0.5;
+    // each sample left adds at least -|normal| to the product: once the
+    // samples so far outweigh them all (with a margin far above round-off),
+    // the answer is known and their searches are spared (a quarter of the
+    // optimizer's, which asks this of every change it tries)
+    const double bound = normal.norm() * (1. + 1e-9);
+    for(int j = 0; j < N; j++) {
+      const double partial = dot(normal, sum), left = (N - j) * bound;
+      if(partial > left) return false;
+      if(partial < -left) return true;
+      SPoint3 half = (g + corners[j]) * 0.5;
       sum += unitNormal(onInput.closest(half, atCentroid.triangle).triangle);
     }
     return dot(normal, sum) < 0.;

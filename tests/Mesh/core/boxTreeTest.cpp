@@ -82,3 +82,42 @@ TEST(boxTree, balancedBoxesHoldingTheirItemsOnce)
   EXPECT_TRUE(empty.nodes.empty());
   EXPECT_TRUE(empty.order.empty());
 }
+
+TEST(boxTree, eachItemAskedOnceAndTheSameTreeEachTime)
+{
+  // the build asks each item's box and centroid once, whatever the depth,
+  // and builds the same tree from the same items
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> x(0., 10.);
+  std::vector<box2> boxes(777);
+  for(box2 &b : boxes)
+    for(int k = 0; k < 2; k++) {
+      b.lo[k] = x(random);
+      b.hi[k] = b.lo[k] + 0.01 * x(random);
+    }
+  std::vector<int> boxCalls(boxes.size(), 0), centroidCalls(boxes.size(), 0);
+  auto build = [&](boxTree<2> &tree) {
+    tree.build((int)boxes.size(), 3,
+               [&](int i, double *lo, double *hi) {
+                 boxCalls[i]++;
+                 std::copy(boxes[i].lo, boxes[i].lo + 2, lo);
+                 std::copy(boxes[i].hi, boxes[i].hi + 2, hi);
+               },
+               [&](int i, int k) {
+                 centroidCalls[i]++;
+                 return 0.5 * (boxes[i].lo[k] + boxes[i].hi[k]);
+               });
+  };
+  boxTree<2> a, b;
+  build(a);
+  for(std::size_t i = 0; i < boxes.size(); i++) {
+    EXPECT_EQ(boxCalls[i], 1);
+    EXPECT_EQ(centroidCalls[i], 2); // one per coordinate
+  }
+  build(b);
+  EXPECT_EQ(a.order, b.order);
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  std::vector<int> seen(boxes.size(), 0);
+  check(a, boxes, 0, 3, seen);
+  for(int n : seen) EXPECT_EQ(n, 1);
+}

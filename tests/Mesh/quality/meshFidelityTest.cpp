@@ -122,6 +122,53 @@ TEST(meshFidelity, againstTheInputGivenTheCentroidsClosestPoint)
   EXPECT_LT(against, 350u);
 }
 
+TEST(meshFidelity, againstTheInputAsWithEverySample)
+{
+  // the test stops searching once its samples so far decide it: the same
+  // answers as the sum of all four samples' unit normals, for triangles
+  // across the input's ridges, reversed, tiny and far from it
+  testTriangulation t = hemisphere(6, 18);
+  const surfaceMesh input = asSurfaceMesh(t);
+  const closestTriangleSearch onInput(input.points, input.triangles);
+  auto unitNormal = [&](int i) {
+    const auto &tri = input.triangles[i];
+    SVector3 n =
+      crossprod(SVector3(input.points[tri[0]], input.points[tri[1]]),
+                SVector3(input.points[tri[0]], input.points[tri[2]]));
+    return n.norm() > 0. ? n * (1. / n.norm()) : n;
+  };
+  auto everySample = [&](const SPoint3 &a, const SPoint3 &b, const SPoint3 &c) {
+    const SPoint3 g = (a + b + c) * (1. / 3.);
+    const int at = onInput.closest(g).triangle;
+    SVector3 sum = unitNormal(at);
+    for(const SPoint3 &p : {a, b, c})
+      sum += unitNormal(onInput.closest((g + p) * 0.5, at).triangle);
+    return dot(crossprod(SVector3(a, b), SVector3(a, c)), sum) < 0.;
+  };
+  sequence s{19};
+  std::size_t against = 0, along = 0;
+  for(int i = 0; i < 2000; i++) {
+    const double size = i % 3 == 0 ? 1e-6 : i % 3 == 1 ? 0.2 : 1.5;
+    SPoint3 c[3];
+    const SPoint3 o = onInput
+                        .closest(SPoint3(2 * s.next() - 1, 2 * s.next() - 1,
+                                         s.next() + (i % 7 == 0 ? 3. : 0.)))
+                        .point;
+    for(SPoint3 &p : c)
+      p = o + SPoint3(size * (s.next() - 0.5), size * (s.next() - 0.5),
+                      size * (s.next() - 0.5));
+    const bool full = everySample(c[0], c[1], c[2]);
+    ASSERT_EQ(triangleAgainstInput(c[0], c[1], c[2], input, onInput), full)
+      << i;
+    EXPECT_EQ(triangleAgainstInput(c[2], c[1], c[0], input, onInput),
+              everySample(c[2], c[1], c[0]))
+      << i;
+    (full ? against : along)++;
+  }
+  EXPECT_GT(against, 300u); // both answers met
+  EXPECT_GT(along, 300u);
+}
+
 TEST(meshFidelity, sameMeshIsFaithfulAndReversedIsInverted)
 {
   surfaceMesh input = asSurfaceMesh(hemisphere(8, 24));
