@@ -114,14 +114,13 @@ namespace {
 closestTriangleSearch::closestTriangleSearch(
   const std::vector<SPoint3> &points,
   const std::vector<std::array<int, 3> > &triangles)
-  : _points(points), _triangles(triangles)
 {
-  if(_triangles.empty()) return;
+  if(triangles.empty()) return;
   auto corner = [&](int t, int c) -> const SPoint3 & {
-    return _points[_triangles[t][c]];
+    return points[triangles[t][c]];
   };
   _tree.build(
-    (int)_triangles.size(), leafSize,
+    (int)triangles.size(), leafSize,
     [&](int t, double *lo, double *hi) {
       for(int k = 0; k < 3; k++) {
         lo[k] = std::min({corner(t, 0)[k], corner(t, 1)[k], corner(t, 2)[k]});
@@ -132,17 +131,11 @@ closestTriangleSearch::closestTriangleSearch(
       return (corner(t, 0)[k] + corner(t, 1)[k] + corner(t, 2)[k]) / 3.;
     });
   const std::vector<int> &order = _tree.order;
-  _triangleBoxes.resize(6 * order.size());
   _corners.resize(3 * order.size());
+  _position.resize(order.size());
   for(std::size_t i = 0; i < order.size(); i++) {
+    _position[order[i]] = (int)i;
     for(int c = 0; c < 3; c++) _corners[3 * i + c] = corner(order[i], c);
-    double *box = &_triangleBoxes[6 * i];
-    for(int k = 0; k < 3; k++) {
-      box[k] = std::min({corner(order[i], 0)[k], corner(order[i], 1)[k],
-                         corner(order[i], 2)[k]});
-      box[3 + k] = std::max({corner(order[i], 0)[k], corner(order[i], 1)[k],
-                             corner(order[i], 2)[k]});
-    }
   }
 }
 
@@ -156,9 +149,8 @@ std::size_t closestTriangleSearch::numBoxes() const
 double closestTriangleSearch::distanceTo(int t, const SPoint3 &p,
                                          SPoint3 &closest) const
 {
-  closest = closestPointOnTriangle(p, _points[_triangles[t][0]],
-                                   _points[_triangles[t][1]],
-                                   _points[_triangles[t][2]]);
+  const SPoint3 *c = &_corners[3 * _position[t]];
+  closest = closestPointOnTriangle(p, c[0], c[1], c[2]);
   return p.distance(closest);
 }
 
@@ -173,7 +165,7 @@ closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p,
   closestTriangleHit hit;
   if(_tree.nodes.empty()) return hit;
   double best2 = 1e300;
-  if(near >= 0 && near < (int)_triangles.size()) {
+  if(near >= 0 && near < (int)_position.size()) {
     hit.triangle = near;
     hit.distance = distanceTo(near, p, hit.point);
     best2 = hit.distance * hit.distance;
@@ -197,10 +189,14 @@ closestTriangleHit closestTriangleSearch::closest(const SPoint3 &p,
     const boxTree<3>::node &n = _tree.nodes[stackNode[size]];
     if(n.count) {
       for(int i = n.first; i < n.first + n.count; i++) {
-        const double *box = &_triangleBoxes[6 * i];
-        if(boxDistance2(box, box + 3, p) >= best2) continue;
-        const SPoint3 point = closestPointOnTriangle(
-          p, _corners[3 * i], _corners[3 * i + 1], _corners[3 * i + 2]);
+        const SPoint3 *c = &_corners[3 * i];
+        double lo[3], hi[3];
+        for(int k = 0; k < 3; k++) {
+          lo[k] = std::min({c[0][k], c[1][k], c[2][k]});
+          hi[k] = std::max({c[0][k], c[1][k], c[2][k]});
+        }
+        if(boxDistance2(lo, hi, p) >= best2) continue;
+        const SPoint3 point = closestPointOnTriangle(p, c[0], c[1], c[2]);
         const double d = p.distance(point);
         if(d * d < best2) {
           best2 = d * d;

@@ -63,15 +63,13 @@ public:
   std::size_t numBoxes() const;
 
 private:
-  std::vector<SPoint3> _points;
-  std::vector<std::array<int, 3> > _triangles;
   boxTree<3> _tree; // over the triangles
-  // the box of triangle _tree.order[i] at 6 i (low corner, then high): a
-  // leaf's triangles farther than the best distance are skipped by it
-  std::vector<double> _triangleBoxes;
   // the corners of triangle _tree.order[i] at 3 i: a leaf's triangles read
-  // one after the other, not through their nodes
+  // one after the other, not through their nodes, and skipped by their box
+  // when farther than the best distance
   std::vector<SPoint3> _corners;
+  // _position[t]: where triangle t is in the tree's order
+  std::vector<int> _position;
   double distanceTo(int t, const SPoint3 &p, SPoint3 &closest) const;
 };
 

@@ -39,10 +39,9 @@ namespace {
 
   dualGraph makeDualGraph(const layoutMesh &mesh,
                           const triangleAdjacency &adjacency,
-                          const std::vector<int> &part)
+                          const std::vector<int> &part,
+                          const std::vector<std::array<int, 3> > &across)
   {
-    const std::vector<std::array<int, 3> > across =
-      partNeighbours(adjacency, part, mesh.triangles.size());
     dualGraph g;
     g.incident.resize(part.size());
     for(std::size_t i = 0; i < part.size(); i++) {
@@ -265,12 +264,15 @@ std::vector<char> bisectPart(const layoutMesh &mesh,
                              const triangleAdjacency &adjacency,
                              const std::vector<int> &part,
                              std::size_t coarseNodes, const partCheck &check,
-                             bool *atFailure)
+                             bool *atFailure,
+                             const std::vector<std::array<int, 3> > *across)
 {
   const std::size_t n = part.size();
   std::vector<char> side(n, 0);
   if(n < 2) return side;
-  dualGraph g = makeDualGraph(mesh, adjacency, part);
+  std::vector<std::array<int, 3> > own;
+  if(!across) own = partNeighbours(adjacency, part, mesh.triangles.size());
+  dualGraph g = makeDualGraph(mesh, adjacency, part, across ? *across : own);
   std::vector<double> x;
   if(coarseNodes >= 2 && n > 2 * coarseNodes)
     x = coarseFiedler(g, n, coarseNodes);
@@ -329,10 +331,12 @@ std::vector<char> bisectPart(const layoutMesh &mesh,
 
 std::vector<std::vector<int> >
 partComponents(const triangleAdjacency &adjacency, const std::vector<int> &part,
-               std::size_t numTriangles)
+               std::size_t numTriangles,
+               const std::vector<std::array<int, 3> > *given)
 {
-  const std::vector<std::array<int, 3> > across =
-    partNeighbours(adjacency, part, numTriangles);
+  std::vector<std::array<int, 3> > own;
+  if(!given) own = partNeighbours(adjacency, part, numTriangles);
+  const std::vector<std::array<int, 3> > &across = given ? *given : own;
   std::vector<std::vector<int> > components;
   std::vector<char> seen(part.size(), 0);
   std::vector<int> stack;

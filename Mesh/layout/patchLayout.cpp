@@ -98,8 +98,11 @@ namespace {
                           const partVerifier &verify, const pendingPart &part)
   {
     partOutcome out;
+    // the part's neighbours, for every step below
+    const std::vector<std::array<int, 3> > across =
+      partNeighbours(adjacency, part.triangles, mesh.triangles.size());
     std::vector<std::vector<int> > components =
-      partComponents(adjacency, part.triangles, mesh.triangles.size());
+      partComponents(adjacency, part.triangles, mesh.triangles.size(), &across);
     if(components.size() > 1) {
       // not a cut of ours: a patch of Gmsh's classification joined by a
       // node only (or a merge through one)
@@ -109,7 +112,7 @@ namespace {
       return out;
     }
     std::vector<char> side =
-      separateFansAtPinch(mesh, adjacency, part.triangles);
+      separateFansAtPinch(mesh, adjacency, part.triangles, &across);
     if(!side.empty()) {
       // a pinched part fails whatever its map: not mapped
       out.check = {false, "its boundary touches itself at a node", false};
@@ -124,8 +127,9 @@ namespace {
     }
     side = bisectPart(mesh, adjacency, part.triangles,
                       out.check.bySize ? parameters.coarseCutNodes : 0,
-                      out.check, &out.record.atFailure);
-    out.record.movedFans = unpinchCut(mesh, adjacency, part.triangles, side);
+                      out.check, &out.record.atFailure, &across);
+    out.record.movedFans =
+      unpinchCut(mesh, adjacency, part.triangles, side, &across);
     cutInTwo(mesh, adjacency, part, side, out);
     return out;
   }

@@ -140,17 +140,20 @@ int mergeNoisePatches(const layoutMesh &mesh,
 // of the area on each side and at most twice as long for its area as the
 // shortest level, the shortest (a fold about one node stays whole in one
 // half of a cut elsewhere, refused for the same reason level after level);
-// `atFailure` (if given): whether such a level was taken
+// `atFailure` (if given): whether such a level was taken. `across`: the
+// part's partNeighbours when the caller has them.
 std::vector<char>
 bisectPart(const layoutMesh &mesh, const triangleAdjacency &adjacency,
            const std::vector<int> &part, std::size_t coarseNodes = 0,
-           const partCheck &check = partCheck(), bool *atFailure = nullptr);
+           const partCheck &check = partCheck(), bool *atFailure = nullptr,
+           const std::vector<std::array<int, 3> > *across = nullptr);
 
 // The edge-connected components of a part (through manifold edges whose two
-// triangles are both in the part)
+// triangles are both in the part); `across` as for bisectPart
 std::vector<std::vector<int> >
 partComponents(const triangleAdjacency &adjacency, const std::vector<int> &part,
-               std::size_t numTriangles);
+               std::size_t numTriangles,
+               const std::vector<std::array<int, 3> > *across = nullptr);
 
 } // namespace reparam
 

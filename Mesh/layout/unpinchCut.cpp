@@ -43,10 +43,11 @@ namespace {
 
   class cutSides {
   public:
-    cutSides(const layoutMesh &mesh, const triangleAdjacency &adjacency,
-             const std::vector<int> &part, std::vector<char> &side)
+    cutSides(const layoutMesh &mesh, const std::vector<int> &part,
+             std::vector<char> &side,
+             const std::vector<std::array<int, 3> > &across)
       : _mesh(mesh), _part(part), _side(side), _around(indexPart(mesh, part)),
-        _across(partNeighbours(adjacency, part, mesh.triangles.size()))
+        _across(across)
     {
     }
 
@@ -173,18 +174,81 @@ namespace {
     const std::vector<int> &_part;
     std::vector<char> &_side;
     partAround _around;
-    std::vector<std::array<int, 3> > _across;
+    const std::vector<std::array<int, 3> > &_across;
     std::vector<int> _mine, _label, _order;
   };
 
+  // Whether the part's triangles (of one side each, when `side` is given)
+  // make several fans around any node: each fan walked once, around its
+  // node across the edges through it, and counted at the node (per side).
+  // What cutSides finds node by node with the triangles around each, in
+  // one pass without them: most parts and cuts have no such node. True
+  // also for a triangle with a repeated node, which the walk cannot take
+  // (cutSides then decides).
+  bool anyPinchedNode(const layoutMesh &mesh,
+                      const std::vector<std::array<int, 3> > &across,
+                      const std::vector<int> &part,
+                      const std::vector<char> *side)
+  {
+    // fans counted per node and side, in a scratch array per thread (all
+    // 0 between calls)
+    thread_local std::vector<unsigned char> fans;
+    if(fans.size() < 2 * mesh.points.size())
+      fans.resize(2 * mesh.points.size(), 0);
+    std::vector<char> walked(3 * part.size(), 0); // (triangle, corner)
+    auto cornerOf = [&](int i, int v) {
+      const auto &tri = mesh.triangles[part[i]];
+      return tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    };
+    bool pinched = false;
+    for(std::size_t i = 0; i < part.size() && !pinched; i++) {
+      const auto &tri = mesh.triangles[part[i]];
+      if(tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
+        pinched = true;
+        break;
+      }
+      const int s = side ? (*side)[i] : 0;
+      for(int c = 0; c < 3 && !pinched; c++) {
+        if(walked[3 * i + c]) continue;
+        walked[3 * i + c] = 1;
+        const int v = tri[c];
+        if(++fans[2 * v + s] > 1) pinched = true;
+        // both ways from triangle i: out across edge c (nodes c, c + 1)
+        // and edge c + 2 (nodes c + 2, c), the two through v
+        for(int out : {c, (c + 2) % 3}) {
+          int at = (int)i, edge = out;
+          while(true) {
+            const int next = across[at][edge];
+            if(next < 0 || (side && (*side)[next] != s)) break;
+            const int cn = cornerOf(next, v);
+            if(walked[3 * next + cn]) break; // round the node, or met
+            walked[3 * next + cn] = 1;
+            // leave `next` by its other edge through v
+            const int back = across[next][cn] == at ? cn : (cn + 2) % 3;
+            edge = back == cn ? (cn + 2) % 3 : cn;
+            at = next;
+          }
+        }
+      }
+    }
+    for(int t : part)
+      for(int v : mesh.triangles[t]) fans[2 * v] = fans[2 * v + 1] = 0;
+    return pinched;
+  }
+
 } // namespace
 
-std::vector<char> separateFansAtPinch(const layoutMesh &mesh,
-                                      const triangleAdjacency &adjacency,
-                                      const std::vector<int> &part)
+std::vector<char>
+separateFansAtPinch(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+                    const std::vector<int> &part,
+                    const std::vector<std::array<int, 3> > *given)
 {
+  std::vector<std::array<int, 3> > own;
+  if(!given) own = partNeighbours(adjacency, part, mesh.triangles.size());
+  const std::vector<std::array<int, 3> > &across = given ? *given : own;
+  if(!anyPinchedNode(mesh, across, part, nullptr)) return std::vector<char>();
   std::vector<char> side(part.size(), 0);
-  cutSides sides(mesh, adjacency, part, side);
+  cutSides sides(mesh, part, side, across);
   std::vector<std::vector<int> > fans;
   if(sides.pinchedNode(0, fans) < 0) return std::vector<char>();
   // the largest fan on one side, the others on the other (a part pinched
@@ -200,16 +264,22 @@ std::vector<char> separateFansAtPinch(const layoutMesh &mesh,
       seeds.push_back(t);
     }
   sides.growFrom(seeds);
-  unpinchCut(mesh, adjacency, part, side);
+  unpinchCut(mesh, adjacency, part, side, &across);
   return side;
 }
 
 std::size_t unpinchCut(const layoutMesh &mesh,
                        const triangleAdjacency &adjacency,
-                       const std::vector<int> &part, std::vector<char> &side)
+                       const std::vector<int> &part, std::vector<char> &side,
+                       const std::vector<std::array<int, 3> > *given)
 {
+  std::vector<std::array<int, 3> > own;
+  if(!given) own = partNeighbours(adjacency, part, mesh.triangles.size());
+  const std::vector<std::array<int, 3> > &across = given ? *given : own;
+  // no pinched node: no fan to move (the rounds would leave the sides)
+  if(!anyPinchedNode(mesh, across, part, &side)) return 0;
   const std::vector<char> before = side;
-  cutSides sides(mesh, adjacency, part, side);
+  cutSides sides(mesh, part, side, across);
   std::size_t moved = 0;
   // each move merges a fan into the other side's; a few rounds settle
   for(int round = 0; round < 8; round++) {

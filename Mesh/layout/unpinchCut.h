@@ -11,6 +11,7 @@
 #ifndef UNPINCH_CUT_H
 #define UNPINCH_CUT_H
 
+#include <array>
 #include <vector>
 #include "patchLayout.h"
 
@@ -23,9 +24,11 @@ struct triangleAdjacency;
 // border the other side across an edge move to it, until no such fan is
 // left (a few rounds at most); returns how many fans moved. A fan that
 // borders the other side nowhere stays (moved, it would be a part alone).
-std::size_t unpinchCut(const layoutMesh &mesh,
-                       const triangleAdjacency &adjacency,
-                       const std::vector<int> &part, std::vector<char> &side);
+// `across`: the part's partNeighbours when the caller has them.
+std::size_t
+unpinchCut(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+           const std::vector<int> &part, std::vector<char> &side,
+           const std::vector<std::array<int, 3> > *across = nullptr);
 
 // A part whose own boundary touches itself at a node (its triangles make
 // several fans there: a patch pinched by a merge or by the input) fails
@@ -33,9 +36,10 @@ std::size_t unpinchCut(const layoutMesh &mesh,
 // instead: the largest fan at the first such node and every triangle
 // nearer to it than to the other fans (in triangles across edges) on side
 // 0, the rest on side 1, then unpinchCut; empty when no node is pinched.
-std::vector<char> separateFansAtPinch(const layoutMesh &mesh,
-                                      const triangleAdjacency &adjacency,
-                                      const std::vector<int> &part);
+std::vector<char>
+separateFansAtPinch(const layoutMesh &mesh, const triangleAdjacency &adjacency,
+                    const std::vector<int> &part,
+                    const std::vector<std::array<int, 3> > *across = nullptr);
 
 } // namespace reparam
 

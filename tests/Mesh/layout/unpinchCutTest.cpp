@@ -1,6 +1,7 @@
 // Reparam - a cut that pinches a side is moved, and a part pinched by its
 // own boundary is parted between its fans
 
+#include <cmath>
 #include <set>
 #include <vector>
 #include <gtest/gtest.h>
@@ -59,6 +60,15 @@ namespace {
     return most;
   }
 
+  // unpinchCut leaves `side` as it is, and says it moved no fan
+  void expectCutKept(const layoutMesh &m, const triangleAdjacency &a,
+                     const std::vector<int> &part, std::vector<char> side)
+  {
+    const std::vector<char> kept = side;
+    EXPECT_EQ(unpinchCut(m, a, part, side), 0u);
+    EXPECT_EQ(side, kept);
+  }
+
 } // namespace
 
 TEST(unpinchCut, aCutThroughANodeTwiceIsMoved)
@@ -89,9 +99,7 @@ TEST(unpinchCut, aCutThroughANodeTwiceIsMoved)
   // a cut that pinches nothing is left as it is
   std::vector<char> halves(part.size());
   for(std::size_t i = 0; i < part.size(); i++) halves[i] = part[i] < 16;
-  const std::vector<char> kept = halves;
-  EXPECT_EQ(unpinchCut(m, a, part, halves), 0u);
-  EXPECT_EQ(halves, kept);
+  expectCutKept(m, a, part, halves);
 }
 
 TEST(unpinchCut, aPartPinchedByItsBoundaryIsPartedBetweenItsFans)
@@ -119,4 +127,66 @@ TEST(unpinchCut, aPartPinchedByItsBoundaryIsPartedBetweenItsFans)
   std::vector<int> all;
   for(int t = 0; t < 18; t++) all.push_back(t);
   EXPECT_TRUE(separateFansAtPinch(m, a, all).empty());
+}
+
+TEST(unpinchCut, twoClosedFansAtANodeArePinchedOneIsNot)
+{
+  // two cones with the same apex: around it every triangle has both its
+  // neighbours through the apex, yet they make two fans (two rings); one
+  // cone alone has no pinched node
+  layoutMesh m;
+  m.points.push_back(SPoint3(0, 0, 0)); // the apex
+  const int n = 6;
+  for(int cone = 0; cone < 2; cone++)
+    for(int k = 0; k < n; k++) {
+      const double a = 2 * M_PI * k / n, z = cone ? 1. : -1.;
+      m.points.push_back(SPoint3(std::cos(a), std::sin(a), z));
+    }
+  for(int cone = 0; cone < 2; cone++)
+    for(int k = 0; k < n; k++)
+      m.triangles.push_back(
+        {{0, 1 + cone * n + k, 1 + cone * n + (k + 1) % n}});
+  const triangleAdjacency a = makeTriangleAdjacency(m.triangles);
+  std::vector<int> both(2 * n), one(n);
+  for(int t = 0; t < 2 * n; t++) both[t] = t;
+  for(int t = 0; t < n; t++) one[t] = t;
+  const std::vector<char> side = separateFansAtPinch(m, a, both);
+  ASSERT_EQ(side.size(), both.size());
+  for(int t = 0; t < 2 * n; t++)
+    EXPECT_EQ(side[t], side[0] == 0 ? t >= n : t < n);
+  EXPECT_TRUE(separateFansAtPinch(m, a, one).empty());
+  // the two rings on sides of their own: no fan to move
+  std::vector<char> apart(2 * n, 0);
+  for(int t = n; t < 2 * n; t++) apart[t] = 1;
+  expectCutKept(m, a, both, apart);
+}
+
+TEST(unpinchCut, neighboursGivenOrFoundGiveTheSameParts)
+{
+  // the layout finds a part's neighbours once and hands them to each step:
+  // the same components, cut and moves as each step finding them itself
+  const layoutMesh m = cellGrid(6);
+  const triangleAdjacency a = makeTriangleAdjacency(m.triangles);
+  // two blocks of cells joined at one node only, and the whole grid
+  std::vector<int> blocks, all(m.triangles.size());
+  for(int i = 0; i < 6; i++)
+    for(int j = 0; j < 6; j++)
+      if((i < 3 && j < 3) || (i >= 3 && j >= 3))
+        for(int k = 0; k < 2; k++) blocks.push_back(2 * (6 * i + j) + k);
+  for(std::size_t t = 0; t < all.size(); t++) all[t] = (int)t;
+  for(const std::vector<int> &part : {blocks, all}) {
+    const auto across = partNeighbours(a, part, m.triangles.size());
+    EXPECT_EQ(partComponents(a, part, m.triangles.size(), &across),
+              partComponents(a, part, m.triangles.size()));
+    EXPECT_EQ(separateFansAtPinch(m, a, part, &across),
+              separateFansAtPinch(m, a, part));
+    std::vector<char> given =
+      bisectPart(m, a, part, 0, partCheck(), nullptr, &across);
+    std::vector<char> found = bisectPart(m, a, part);
+    EXPECT_EQ(given, found);
+    EXPECT_EQ(unpinchCut(m, a, part, given, &across),
+              unpinchCut(m, a, part, found));
+    EXPECT_EQ(given, found);
+  }
+  EXPECT_EQ(partComponents(a, blocks, m.triangles.size()).size(), 2u);
 }
