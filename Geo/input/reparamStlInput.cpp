@@ -41,10 +41,10 @@ namespace {
   // coordinates: nodes by exact coordinates (Gmsh merges them after)
   void indexCorners(const std::vector<SPoint3> &corners, stlSolid &solid)
   {
-    // the corners sorted by their coordinates (then by their place), equal
-    // ones together; nodes numbered in order of first appearance, with the
-    // coordinates of that appearance: a sort of a flat array, not a tree of
-    // a node per corner (a tenth of the reading of a large scan)
+    // the corners sorted by their coordinates, equal ones together in their
+    // order in the file; nodes numbered in order of first appearance, with
+    // the coordinates of that appearance: a sort of a flat array, not a
+    // tree of a node per corner
     solid.facets.resize(corners.size() / 3);
     const std::size_t n = 3 * solid.facets.size();
     auto key = [&corners](std::size_t i) {
@@ -53,11 +53,9 @@ namespace {
     };
     std::vector<int> order(n);
     for(std::size_t i = 0; i < n; i++) order[i] = (int)i;
-    std::sort(order.begin(), order.end(), [&key](int a, int b) {
-      const std::array<double, 3> ka = key(a), kb = key(b);
-      return ka < kb || (!(kb < ka) && a < b);
-    });
-    // group[i]: the first corner (in the file) with i's coordinates
+    std::stable_sort(order.begin(), order.end(),
+                     [&key](int a, int b) { return key(a) < key(b); });
+    // first[i]: the first corner (in the file) with i's coordinates
     std::vector<int> first(n);
     for(std::size_t k = 0; k < n; k++)
       first[order[k]] = k && !(key(order[k - 1]) < key(order[k])) ?

@@ -34,22 +34,21 @@ template <int D> struct boxTree {
     if(!n) return;
     // every level reads every item's box and centroid: computed once
     // (asked of the item at each level, they were most of the build)
-    _boxes.resize(2 * D * (std::size_t)n);
-    _centroids.resize(D * (std::size_t)n);
+    std::vector<double> boxes(2 * D * (std::size_t)n),
+      centroids(D * (std::size_t)n);
     for(int i = 0; i < n; i++) {
-      box(i, &_boxes[2 * D * i], &_boxes[2 * D * i + D]);
-      for(int k = 0; k < D; k++) _centroids[D * i + k] = centroid(i, k);
+      box(i, &boxes[2 * D * i], &boxes[2 * D * i + D]);
+      for(int k = 0; k < D; k++) centroids[D * i + k] = centroid(i, k);
     }
     nodes.reserve(2 * n / leafSize + 2);
-    split(0, n, leafSize);
-    std::vector<double>().swap(_boxes);
-    std::vector<double>().swap(_centroids);
+    split(0, n, leafSize, boxes, centroids);
   }
 
 private:
-  std::vector<double> _boxes, _centroids; // during the build
-
-  int split(int first, int count, int leafSize)
+  // boxes: each item's low corner then high corner; centroids: D each
+  int split(int first, int count, int leafSize,
+            const std::vector<double> &boxes,
+            const std::vector<double> &centroids)
   {
     const int index = (int)nodes.size();
     nodes.push_back(node());
@@ -59,8 +58,8 @@ private:
     std::fill(hi, hi + D, -1e300);
     std::fill(chi, chi + D, -1e300);
     for(int i = first; i < first + count; i++) {
-      const double *l = &_boxes[2 * D * order[i]], *h = l + D;
-      const double *c = &_centroids[D * order[i]];
+      const double *l = &boxes[2 * D * order[i]], *h = l + D;
+      const double *c = &centroids[D * order[i]];
       for(int k = 0; k < D; k++) {
         lo[k] = std::min(lo[k], l[k]);
         hi[k] = std::max(hi[k], h[k]);
@@ -79,13 +78,13 @@ private:
     for(int k = 1; k < D; k++)
       if(chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
     const int half = count / 2;
-    const double *centroids = _centroids.data();
     std::nth_element(order.begin() + first, order.begin() + first + half,
                      order.begin() + first + count, [&](int a, int b) {
                        return centroids[D * a + axis] < centroids[D * b + axis];
                      });
-    const int left = split(first, half, leafSize);
-    const int right = split(first + half, count - half, leafSize);
+    const int left = split(first, half, leafSize, boxes, centroids);
+    const int right =
+      split(first + half, count - half, leafSize, boxes, centroids);
     nodes[index].left = left;
     nodes[index].right = right;
     return index;

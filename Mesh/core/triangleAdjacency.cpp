@@ -57,10 +57,11 @@ partNeighbours(const triangleAdjacency &adjacency, const std::vector<int> &part,
 {
   // the mesh's triangles by their index in the part: a scratch array per
   // thread, all -1 between calls
+  // (allocated first: nothing may throw while the scratch is written)
+  std::vector<std::array<int, 3> > neighbours(part.size());
   thread_local std::vector<int> local;
   if(local.size() < numTriangles) local.resize(numTriangles, -1);
   for(std::size_t i = 0; i < part.size(); i++) local[part[i]] = (int)i;
-  std::vector<std::array<int, 3> > neighbours(part.size());
   for(std::size_t i = 0; i < part.size(); i++)
     for(int k = 0; k < 3; k++) {
       const int t = part[i];

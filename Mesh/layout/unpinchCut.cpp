@@ -24,17 +24,19 @@ namespace {
     std::sort(a.nodes.begin(), a.nodes.end());
     a.nodes.erase(std::unique(a.nodes.begin(), a.nodes.end()), a.nodes.end());
     // each node's place among them, in a scratch array per thread (all -1
-    // between calls) rather than a search
+    // between calls) rather than a search; the arrays allocated first:
+    // nothing may throw while the scratch is written
+    a.start.assign(a.nodes.size() + 1, 0);
+    a.at.resize(3 * part.size());
+    std::vector<int> fill(a.nodes.size());
     thread_local std::vector<int> place;
     if(place.size() < mesh.points.size()) place.resize(mesh.points.size(), -1);
     for(std::size_t i = 0; i < a.nodes.size(); i++) place[a.nodes[i]] = (int)i;
-    a.start.assign(a.nodes.size() + 1, 0);
     for(int t : part)
       for(int n : mesh.triangles[t]) a.start[place[n] + 1]++;
     for(std::size_t i = 0; i < a.nodes.size(); i++)
       a.start[i + 1] += a.start[i];
-    std::vector<int> fill(a.start.begin(), a.start.end() - 1);
-    a.at.resize(3 * part.size());
+    std::copy(a.start.begin(), a.start.end() - 1, fill.begin());
     for(std::size_t i = 0; i < part.size(); i++)
       for(int n : mesh.triangles[part[i]]) a.at[fill[place[n]]++] = (int)i;
     for(int n : a.nodes) place[n] = -1;
