@@ -1,6 +1,10 @@
 // Reparam - helpers for tests that run inside Gmsh (through its API)
 
+#include <iostream>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 #include "GModel.h"
@@ -16,6 +20,74 @@ using namespace reparam;
 
 namespace {
 
+  // The options the tests change, each put back after every test to its
+  // value before the first one: a test that forgot to reset one would
+  // change the tests run after it in the same process (ctest runs each
+  // alone, a developer may run them all at once); the forgotten ones are
+  // named on the standard error
+  class optionsPutBack : public ::testing::EmptyTestEventListener {
+  public:
+    optionsPutBack()
+    {
+      for(const char *name : numbers) {
+        double value;
+        gmsh::option::getNumber(name, value);
+        _numbers.emplace_back(name, value);
+      }
+      for(const char *name : strings) {
+        std::string value;
+        gmsh::option::getString(name, value);
+        _strings.emplace_back(name, value);
+      }
+    }
+    void OnTestEnd(const ::testing::TestInfo &test) override
+    {
+      for(const auto &o : _numbers) {
+        double value;
+        gmsh::option::getNumber(o.first, value);
+        if(value == o.second) continue;
+        std::cerr << test.test_suite_name() << "." << test.name() << " left "
+                  << o.first << " = " << value << " (" << o.second
+                  << " before): put back\n";
+        gmsh::option::setNumber(o.first, o.second);
+      }
+      for(const auto &o : _strings) {
+        std::string value;
+        gmsh::option::getString(o.first, value);
+        if(value == o.second) continue;
+        std::cerr << test.test_suite_name() << "." << test.name() << " left "
+                  << o.first << " = \"" << value << "\": put back\n";
+        gmsh::option::setString(o.first, o.second);
+      }
+    }
+
+  private:
+    static constexpr const char *numbers[] = {"Mesh.CompoundParametrization",
+                                              "Mesh.CompoundRepair",
+                                              "Mesh.CompoundFillHoles",
+                                              "Mesh.CompoundLayout",
+                                              "Mesh.CompoundNoiseSize",
+                                              "Mesh.CompoundFeatureScale",
+                                              "Mesh.CompoundSplit",
+                                              "Mesh.CompoundCurveCorners",
+                                              "Mesh.CompoundMeshSizeGradient",
+                                              "Mesh.CompoundMeshSizeFromStrips",
+                                              "Mesh.CompoundCurvatureMetric",
+                                              "Mesh.CompoundOptimize",
+                                              "Mesh.CompoundReport",
+                                              "Mesh.ReparamMaxTriangles",
+                                              "Mesh.MeshSizeMin",
+                                              "Mesh.MeshSizeMax",
+                                              "Mesh.MeshSizeFromCurvature",
+                                              "Mesh.Algorithm",
+                                              "Mesh.RecombineAll",
+                                              "General.NumThreads",
+                                              "General.Verbosity"};
+    static constexpr const char *strings[] = {"Mesh.CompoundReportFile"};
+    std::vector<std::pair<std::string, double> > _numbers;
+    std::vector<std::pair<std::string, std::string> > _strings;
+  };
+
   class gmshEnvironment : public ::testing::Environment {
   public:
     void SetUp() override
@@ -25,6 +97,8 @@ namespace {
       // keep going after errors, like the gmsh executable: the tests provoke
       // some and read them from the log
       gmsh::option::setNumber("General.AbortOnError", 0);
+      ::testing::UnitTest::GetInstance()->listeners().Append(
+        new optionsPutBack);
     }
     void TearDown() override { gmsh::finalize(); }
   };
@@ -219,6 +293,18 @@ void squareWithAShortCurve()
     }
   gmsh::model::mesh::addElementsByType(1, 2, {}, triangles);
   gmsh::model::mesh::createGeometry();
+}
+
+uniformMeshSize::uniformMeshSize(double size)
+{
+  gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+}
+
+uniformMeshSize::~uniformMeshSize()
+{
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
 }
 
 GFace *meshedSquareWithAShortCurve(double size)

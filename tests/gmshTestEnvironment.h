@@ -63,6 +63,17 @@ freeMeshEdges(std::size_t *nonManifold = nullptr);
 // CreateGeometry
 void squareWithAShortCurve();
 
+// Mesh.MeshSizeMin and Mesh.MeshSizeMax set to `size` while the object
+// lives, then back to Gmsh's defaults (0 and 1e22), also when an assertion
+// ends the test early
+class uniformMeshSize {
+public:
+  explicit uniformMeshSize(double size);
+  ~uniformMeshSize();
+  uniformMeshSize(const uniformMeshSize &) = delete;
+  uniformMeshSize &operator=(const uniformMeshSize &) = delete;
+};
+
 // squareWithAShortCurve() meshed (Mesh 2) at `size` with the current
 // Mesh.Algorithm, the size options reset after; its face
 GFace *meshedSquareWithAShortCurve(double size);

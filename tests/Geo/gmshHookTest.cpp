@@ -68,7 +68,9 @@ namespace {
       run();
     std::vector<std::size_t> tags, nodes;
     gmsh::model::mesh::getElementsByType(2, tags, nodes);
-    gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
     return tags.size();
   }
 
@@ -257,7 +259,7 @@ TEST(gmshHook, remeshMatchesGmshElementCount)
   gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0);
   std::size_t stock = remeshDome(0), ours = remeshDome(3);
   gmsh::option::setNumber("Mesh.CompoundCurveCorners", 1);
-  gmsh::option::setNumber("Mesh.CompoundOptimize", 1);
+  gmsh::option::setNumber("Mesh.CompoundOptimize", 2);
   gmsh::option::setNumber("Mesh.CompoundMeshSizeGradient", 0.5);
   ASSERT_GT(stock, 1000u);
   EXPECT_LE(std::fabs((double)ours - (double)stock), 0.01 * stock)
@@ -322,8 +324,7 @@ TEST(gmshHook, compoundOfClassifiedPatchesExitsCleanly)
   std::vector<int> tags;
   for(auto &s : surfaces) tags.push_back(s.second);
   gmsh::model::mesh::setCompound(2, tags);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
+  const uniformMeshSize meshSize(0.05);
   gmsh::option::setNumber("General.Verbosity", 99);
   std::vector<std::string> log = logOf([] { gmsh::model::mesh::generate(2); });
   gmsh::option::setNumber("General.Verbosity", 5);
@@ -369,7 +370,7 @@ TEST(gmshHook, remeshIsOrientedAlongTheInputByEveryElement)
   // Gmsh's own map keeps Gmsh's own orientation
   gmsh::option::setNumber("Mesh.CompoundParametrization", 0);
   EXPECT_FALSE(reparamOrientMeshedFace(gf));
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
 }
 
 namespace {
@@ -389,7 +390,7 @@ namespace {
     gmsh::model::mesh::createGeometry();
     gmsh::option::setNumber("Mesh.CompoundSplit", 0);
     gmsh::option::setNumber("Mesh.CompoundLayout", 1);
-    gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
     std::vector<int> maps;
     for(auto it = GModel::current()->firstFace();
         it != GModel::current()->lastFace(); ++it) {

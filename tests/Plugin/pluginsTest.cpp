@@ -59,7 +59,7 @@ namespace {
     gmsh::merge(tutorialFile("dome.stl"));
     gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
     gmsh::model::mesh::createGeometry();
-    gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+    gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
     for(auto it = GModel::current()->firstFace();
         it != GModel::current()->lastFace(); ++it)
       if(!(*it)->stl_triangles.empty()) return *it;
@@ -166,8 +166,7 @@ TEST(reparamViews, elementAndNodalViewsKeepTheirElements)
 TEST(surfaceMeshQualityPlugin, kappaViewAndHistogramOfTheRemesh)
 {
   ASSERT_NE(classifiedDome(6), nullptr);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
+  const uniformMeshSize meshSize(0.05);
   gmsh::model::mesh::generate(2);
   std::vector<MTriangle *> all;
   for(auto it = GModel::current()->firstFace();

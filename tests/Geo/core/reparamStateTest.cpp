@@ -223,7 +223,7 @@ TEST(reparamState, theModelsReportEndsThePendingFaceReports)
   // with the report off, the reports go unprinted
   reparamReportMeshedFace(faces[0], 0.);
   EXPECT_EQ(pendingFaceReports().size(), 1u);
-  gmsh::option::setNumber("Mesh.CompoundReport", 0);
+  gmsh::option::setNumber("Mesh.CompoundReport", 1);
   reparamReportMeshedModel(GModel::current());
   EXPECT_TRUE(pendingFaceReports().empty());
 }

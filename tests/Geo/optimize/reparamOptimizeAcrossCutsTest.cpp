@@ -70,7 +70,7 @@ namespace {
     gmsh::option::setNumber("Mesh.CompoundOptimize", optimize);
     const std::vector<std::string> log =
       remeshWithRecipe(jitteredSphere(32, 16, 0.2), 0.08);
-    gmsh::option::setNumber("Mesh.CompoundOptimize", 1);
+    gmsh::option::setNumber("Mesh.CompoundOptimize", 2);
     for(const std::string &l : log)
       if(l.find("Error") != std::string::npos) return false;
     return true;
@@ -163,7 +163,7 @@ TEST(optimizeAcrossCuts, offWithoutCompoundOptimize)
   ASSERT_TRUE(remeshSphere(0));
   gmsh::option::setNumber("Mesh.CompoundOptimize", 0);
   EXPECT_EQ(reparamOptimizeMeshedModel(GModel::current()), 0);
-  gmsh::option::setNumber("Mesh.CompoundOptimize", 1);
+  gmsh::option::setNumber("Mesh.CompoundOptimize", 2);
   EXPECT_EQ(measureSphere().crossedCuts, 0u);
 }
 

@@ -37,7 +37,7 @@ namespace {
     gmsh::option::setNumber("Mesh.CompoundOptimize", optimize);
     const std::vector<std::string> log =
       remeshWithRecipe(t, size, featureAngle);
-    gmsh::option::setNumber("Mesh.CompoundOptimize", 1);
+    gmsh::option::setNumber("Mesh.CompoundOptimize", 2);
     remeshed r;
     for(const std::string &line : log)
       r.optimizedLogged =

@@ -99,10 +99,11 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   // distances against the union of the inputs' boxes (diagonal 5)
   EXPECT_TRUE(has(total, "\"hausdorffPercent\": 4,"));
   EXPECT_TRUE(has(total, "\"meanDistancePercent\": 0.35,"));
-  EXPECT_TRUE(has(total, "\"inverted\": 2, \"poorTriangleCauses\": "
-                        "{\"sharpCurveAngle\": 0, \"shortCurveSegment\": 0, "
-                        "\"narrowStrip\": 0, \"inside\": 0}, \"optimization\": "
-                        "null}"));
+  EXPECT_TRUE(has(total,
+                  "\"inverted\": 2, \"poorTriangleCauses\": "
+                  "{\"sharpCurveAngle\": 0, \"shortCurveSegment\": 0, "
+                  "\"narrowStrip\": 0, \"inside\": 0}, \"optimization\": "
+                  "null}"));
   EXPECT_EQ(poorTrianglesLine(reports), "");
   // the causes of the poor triangles: summed, named
   reports[0].poorTriangles[(int)poorTriangleCause::sharpCurveAngle] = 2;
@@ -134,7 +135,8 @@ TEST(reparamReport, totalCombinesFacesByTheirWeights)
   EXPECT_TRUE(has(optimized.substr(optimized.find("\"total\"")),
                   "\"optimization\": {\"kappaMinBefore\": 0.1, \"seconds\": "
                   "0.75, \"insertedInputNodes\": 4, \"longEdgeSplits\": 0, "
-                  "\"shortEdgeCollapses\": 0, \"flips\": 0, \"moves\": 0, \"againstInputBefore\": 5, "
+                  "\"shortEdgeCollapses\": 0, \"flips\": 0, \"moves\": 0, "
+                  "\"againstInputBefore\": 5, "
                   "\"againstInputAfter\": 2}}"));
   EXPECT_TRUE(has(optimizationLine(reports),
                   "kappa min 0.1 -> 0.3, 4 input nodes the mesh cut off "
@@ -175,8 +177,7 @@ TEST(reparamReport, remeshReportsWhatEachStageDid)
 {
   gmsh::clear();
   gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
+  const uniformMeshSize meshSize(0.05);
   const std::string file = testing::TempDir() + "reparamReport.json";
   std::remove(file.c_str());
   gmsh::option::setString("Mesh.CompoundReportFile", file);
@@ -201,7 +202,7 @@ TEST(reparamReport, remeshReportsWhatEachStageDid)
 
   gmsh::model::mesh::generate(2);
   gmsh::option::setString("Mesh.CompoundReportFile", "");
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
   EXPECT_TRUE(pendingFaceReports().empty()); // printed and forgotten
 
   std::ifstream in(file);
@@ -242,8 +243,7 @@ TEST(reparamReport, surfaceKeptAsItsInputIsNamed)
   // neighbours, and the report names it
   gmsh::clear();
   gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.05);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.05);
+  const uniformMeshSize meshSize(0.05);
   gmsh::merge(tutorialFile("dome.stl"));
   gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
   std::vector<std::pair<int, int> > surfaces;
@@ -269,7 +269,7 @@ TEST(reparamReport, surfaceKeptAsItsInputIsNamed)
   gmsh::model::mesh::createGeometry();
   gmsh::model::mesh::generate(2);
   gmsh::option::setString("Mesh.CompoundReportFile", "");
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
 
   EXPECT_TRUE(unparametrizedFaces(GModel::current()).empty());
   EXPECT_EQ(facesKeptAsInput(GModel::current()),
@@ -286,10 +286,9 @@ TEST(reparamReport, surfaceKeptAsItsInputIsNamed)
       std::vector<double> p[3], par;
       for(int j = 0; j < 3; j++)
         gmsh::model::mesh::getNode(triangleNodes[i + j], p[j], par);
-      SVector3 n = crossprod(SVector3(p[1][0] - p[0][0], p[1][1] - p[0][1],
-                                      p[1][2] - p[0][2]),
-                             SVector3(p[2][0] - p[0][0], p[2][1] - p[0][1],
-                                      p[2][2] - p[0][2]));
+      SVector3 n = crossprod(
+        SVector3(p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]),
+        SVector3(p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]));
       sum += 0.5 * n.norm();
     }
     return sum;

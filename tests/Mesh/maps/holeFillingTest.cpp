@@ -50,7 +50,8 @@ namespace {
 
 TEST(holeFilling, threeHolesGiveADiskWithTheSameNodes)
 {
-  discretePatch p = makePatchOrDie(liftPlanar(polarDiskWithHoles(10, 40, threeHoles), 0.3));
+  discretePatch p =
+    makePatchOrDie(liftPlanar(polarDiskWithHoles(10, 40, threeHoles), 0.3));
   ASSERT_EQ(p.boundaryLoops.size(), 4u);
   holeFilling f = fillHoles(p);
   EXPECT_EQ(f.filledHoles, 3);
@@ -97,7 +98,8 @@ TEST(holeFilling, fillingIsLocallyDelaunayOnTheMeanPlane)
             continue;
           double ax = P(i).x() - P(d).x(), ay = P(i).y() - P(d).y();
           double bx = P(j).x() - P(d).x(), by = P(j).y() - P(d).y();
-          double cx = P(opposite).x() - P(d).x(), cy = P(opposite).y() - P(d).y();
+          double cx = P(opposite).x() - P(d).x(),
+                 cy = P(opposite).y() - P(d).y();
           double incircle = (ax * ax + ay * ay) * (bx * cy - cx * by) -
                             (bx * bx + by * by) * (ax * cy - cx * ay) +
                             (cx * cx + cy * cy) * (ax * by - bx * ay);
@@ -112,7 +114,8 @@ TEST(holeFilling, fillingIsLocallyDelaunayOnTheMeanPlane)
 
 TEST(holeFilling, fillingLowersAngleDistortionNearHoles)
 {
-  discretePatch p = makePatchOrDie(liftPlanar(polarDiskWithHoles(10, 40, threeHoles), 0.3));
+  discretePatch p =
+    makePatchOrDie(liftPlanar(polarDiskWithHoles(10, 40, threeHoles), 0.3));
   discretePatch extended = filledPatch(p, fillHoles(p));
   patchMap free = meanValueMap(p), filled = meanValueMap(extended);
   ASSERT_TRUE(free.error.ok() && filled.error.ok());
@@ -138,7 +141,8 @@ TEST(holeFilling, noRemeshNodeInsideAHole)
   for(const auto &tri : t.triangles) {
     std::fprintf(f, "facet normal 0 0 1\nouter loop\n");
     for(int v : tri)
-      std::fprintf(f, "vertex %.17g %.17g 0\n", t.points[v].x(), t.points[v].y());
+      std::fprintf(f, "vertex %.17g %.17g 0\n", t.points[v].x(),
+                   t.points[v].y());
     std::fprintf(f, "endloop\nendfacet\n");
   }
   std::fprintf(f, "endsolid holes\n");
@@ -146,8 +150,7 @@ TEST(holeFilling, noRemeshNodeInsideAHole)
   for(int map : {3, 4, 5}) {
     gmsh::clear();
     gmsh::option::setNumber("Mesh.CompoundParametrization", map);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.04);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.04);
+    const uniformMeshSize meshSize(0.04);
     gmsh::merge(stl);
     gmsh::model::mesh::classifySurfaces(40 * M_PI / 180, true, true, M_PI);
     gmsh::model::mesh::createGeometry();
@@ -170,7 +173,7 @@ TEST(holeFilling, noRemeshNodeInsideAHole)
     }
     EXPECT_EQ(inside, 0) << "map " << map;
   }
-  gmsh::option::setNumber("Mesh.CompoundParametrization", 3);
+  gmsh::option::setNumber("Mesh.CompoundParametrization", 6);
 }
 
 namespace {
