@@ -6,8 +6,10 @@
 #include "GEdge.h"
 #include "GFace.h"
 #include "GModel.h"
+#include "GVertex.h"
 #include "GmshMessage.h"
 #include "MLine.h"
+#include "MPoint.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "OS.h"
@@ -100,6 +102,7 @@ namespace {
       std::vector<int> triangleFace = writeTriangles(out);
       dropCrossedCurves();
       for(auto &e : _leaving) {
+        if(e.first->dim() == 0) dropPointElements((GVertex *)e.first, e.second);
         std::vector<MVertex *> &own = e.first->mesh_vertices;
         own.erase(
           std::remove_if(own.begin(), own.end(),
@@ -119,6 +122,21 @@ namespace {
     {
       if(landing < 0) landing = _onInput.closest(p).triangle;
       return landing < 0 ? 0 : _inputFace[landing];
+    }
+
+    // A model point whose node left (moved off it or collapsed away) keeps
+    // no point element of it
+    static void dropPointElements(GVertex *gv, const std::set<MVertex *> &gone)
+    {
+      std::vector<MPoint *> &points = gv->points;
+      points.erase(std::remove_if(points.begin(), points.end(),
+                                  [&](MPoint *p) {
+                                    if(!gone.count(p->getVertex(0)))
+                                      return false;
+                                    delete p;
+                                    return true;
+                                  }),
+                   points.end());
     }
 
     MVertex *newFaceNode(const SPoint3 &p, GFace *gf)
@@ -377,6 +395,21 @@ namespace {
     return against;
   }
 
+  // Whether every curve at gv is one the group may cross: a point only the
+  // layout's cuts (or the curves of faces that are noise at the mesh scale)
+  // meet, where the input has no feature (a closed cut's point, the ends of a
+  // cut between two others), is no more kept than their nodes; a point
+  // embedded in a face (no curve) or on a feature curve, a border or another
+  // group's curve stays
+  bool onlyCrossableCurvesMeet(GVertex *gv, const std::set<GEdge *> &cuts)
+  {
+    const std::vector<GEdge *> around = gv->edges();
+    if(around.empty()) return false;
+    for(GEdge *ge : around)
+      if(!cuts.count(ge)) return false;
+    return true;
+  }
+
   // Whether this group's meshes are those the optimization left
   bool alreadyOptimized(const cutGroup &g)
   {
@@ -417,6 +450,7 @@ namespace {
     std::set<GFace *> faces(g.faces.begin(), g.faces.end());
     auto movable = [&](const MVertex *v) {
       GEntity *e = v->onWhat();
+      if(e->dim() == 0) return onlyCrossableCurvesMeet((GVertex *)e, cuts);
       return (e->dim() == 2 && faces.count((GFace *)e)) ||
              (e->dim() == 1 && cuts.count((GEdge *)e));
     };

@@ -8,6 +8,7 @@
 #include "GEdge.h"
 #include "GFace.h"
 #include "GModel.h"
+#include "GVertex.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "gmsh.h"
@@ -156,6 +157,30 @@ TEST(optimizeAcrossCuts, zigZagCutIsCrossedAndTheMeshStaysWhole)
   EXPECT_EQ(after.inward, 0u);
   // done: its mesh is the one it left
   EXPECT_EQ(reparamOptimizeMeshedModel(GModel::current()), 0);
+}
+
+TEST(optimizeAcrossCuts, aPointOnlyCutsMeetAtMovesLikeTheirNodes)
+{
+  // the sphere's cut is a closed curve through one model point, which marks
+  // nothing of the input: its node moves (or goes) with the cut's, and the
+  // point keeps neither node nor point element
+  ASSERT_TRUE(remeshSphere(0));
+  const std::vector<cutGroup> groups = facesJoinedByCuts(GModel::current(), {});
+  ASSERT_EQ(groups.size(), 1u);
+  ASSERT_EQ(groups[0].cuts.size(), 1u);
+  GVertex *gv = groups[0].cuts[0]->getBeginVertex();
+  ASSERT_EQ(gv, groups[0].cuts[0]->getEndVertex());
+  ASSERT_EQ(gv->mesh_vertices.size(), 1u);
+  ASSERT_EQ(gv->points.size(), 1u);
+  bunchCutNodes();
+  EXPECT_EQ(reparamOptimizeMeshedModel(GModel::current()), 1);
+  EXPECT_TRUE(gv->mesh_vertices.empty());
+  EXPECT_TRUE(gv->points.empty());
+  EXPECT_TRUE(surfacesWithoutElements().empty());
+  std::size_t nonManifold = 0;
+  EXPECT_TRUE(freeMeshEdges(&nonManifold).empty());
+  EXPECT_EQ(nonManifold, 0u);
+  EXPECT_GT(measureSphere().worstKappa, 0.6);
 }
 
 TEST(optimizeAcrossCuts, offWithoutCompoundOptimize)
