@@ -9,7 +9,6 @@
 #include "GVertex.h"
 #include "GmshMessage.h"
 #include "MLine.h"
-#include "MPoint.h"
 #include "MTriangle.h"
 #include "MVertex.h"
 #include "OS.h"
@@ -102,7 +101,6 @@ namespace {
       std::vector<int> triangleFace = writeTriangles(out);
       dropCrossedCurves();
       for(auto &e : _leaving) {
-        if(e.first->dim() == 0) dropPointElements((GVertex *)e.first, e.second);
         std::vector<MVertex *> &own = e.first->mesh_vertices;
         own.erase(
           std::remove_if(own.begin(), own.end(),
@@ -122,21 +120,6 @@ namespace {
     {
       if(landing < 0) landing = _onInput.closest(p).triangle;
       return landing < 0 ? 0 : _inputFace[landing];
-    }
-
-    // A model point whose node left (moved off it or collapsed away) keeps
-    // no point element of it
-    static void dropPointElements(GVertex *gv, const std::set<MVertex *> &gone)
-    {
-      std::vector<MPoint *> &points = gv->points;
-      points.erase(std::remove_if(points.begin(), points.end(),
-                                  [&](MPoint *p) {
-                                    if(!gone.count(p->getVertex(0)))
-                                      return false;
-                                    delete p;
-                                    return true;
-                                  }),
-                   points.end());
     }
 
     MVertex *newFaceNode(const SPoint3 &p, GFace *gf)
@@ -172,9 +155,11 @@ namespace {
         }
         MVertex *v = _nodes[origin];
         if(v->onWhat()->dim() != 2) {
-          // a cut's node moved off it
+          // a cut's node moved off it; a model point keeps its own node,
+          // which no triangle uses any more: its place (Gmsh reads a
+          // discrete point's from it) and its point element stay
           out[i] = newFaceNode(p, gf);
-          leave(v, true);
+          if(v->onWhat()->dim() == 1) leave(v, true);
           continue;
         }
         if(v->onWhat() != gf) {
@@ -188,9 +173,10 @@ namespace {
         v->setParameter(1, uv.y());
         out[i] = v;
       }
-      // nodes collapsed away (only movable ones: of the faces or the cuts)
+      // nodes collapsed away (only movable ones: of the faces, the cuts or
+      // the points only cuts meet, which keep theirs as above)
       for(std::size_t i = 0; i < _nodes.size(); i++)
-        if(!kept[i]) leave(_nodes[i], true);
+        if(!kept[i] && _nodes[i]->onWhat()->dim() != 0) leave(_nodes[i], true);
       return out;
     }
 
@@ -398,7 +384,7 @@ namespace {
   // Whether every curve at gv is one the group may cross: a point only the
   // layout's cuts (or the curves of faces that are noise at the mesh scale)
   // meet, where the input has no feature (a closed cut's point, the ends of a
-  // cut between two others), is no more kept than their nodes; a point
+  // cut between two others), whose node may move like theirs; a point
   // embedded in a face (no curve) or on a feature curve, a border or another
   // group's curve stays
   bool onlyCrossableCurvesMeet(GVertex *gv, const std::set<GEdge *> &cuts)
