@@ -125,6 +125,16 @@ int reparamComputeParametrization(const std::vector<MTriangle *> &triangles,
 // one warning naming it and the reason; false with Gmsh's own map
 bool reparamKeepInputMesh(GFace *gf);
 
+// Before the faces are meshed (patches/0024, Mesh/Generator.cpp): the map
+// of every discrete face whose map options (Mesh.CompoundParametrization,
+// FillHoles, Repair) changed since its CreateGeometry computed again, in
+// its arrays (Geo/parametrize/reparamParametrizeAgain.h); a change of the
+// options only ClassifySurfaces reads named once
+void reparamParametrizeAgain(GModel *m);
+// At the start of gf's mesh (Geo/discreteFace.cpp): true once after its
+// (u, v) were computed again, when it makes its parametric triangles anew
+bool reparamTakeNewParametrization(GFace *gf);
+
 // The (u, v) triangles of a face, found by Reparam's tree where the image
 // is not convex (patches/0007, 0021, Geo/discreteFace.cpp;
 // Geo/parametrize/reparamUvLocate.cpp)

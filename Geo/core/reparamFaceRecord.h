@@ -36,6 +36,18 @@ struct parametrizationRecord {
   bool fromLayout = false;
 };
 
+// The options a face's map was computed with (Mesh.CompoundParametrization,
+// FillHoles, Repair) and the order its patch took the nodes and triangles
+// of the face's arrays in (Geo/parametrize/reparamTrianglePatch.h; empty
+// after Gmsh's own map): the map is computed again before the face is
+// meshed when the options changed since
+// (Geo/parametrize/reparamParametrizeAgain.h)
+struct mapOptionsRecord {
+  int map = -1;
+  bool fillHoles = true, repair = true;
+  std::vector<int> canonicalNodes, triangleOrder;
+};
+
 // What Mesh.CompoundOptimize did to a face's new mesh
 struct optimizationRecord {
   bool done = false;
@@ -81,9 +93,14 @@ struct curvatureFieldRecord {
 };
 
 struct faceRecord {
-  // CreateGeometry (Geo/parametrize): the map, why it failed (for the
-  // safety net's warning), the input triangles kept when it failed
+  // CreateGeometry (Geo/parametrize): the map, the options it was computed
+  // with, why it failed (for the safety net's warning), the input
+  // triangles kept when it failed
   std::optional<parametrizationRecord> parametrization;
+  std::optional<mapOptionsRecord> mappedWith;
+  // its (u, v) were computed again in its arrays, and its parametric
+  // triangles are not yet made of them (reparamTakeNewParametrization)
+  bool newParametrization = false;
   std::string failure;
   std::optional<inputTriangulation> keptInput;
   // Its meshes (Geo/planar, Geo/optimize, Geo/quad): what the

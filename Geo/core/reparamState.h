@@ -40,6 +40,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <shared_mutex>
 #include <utility>
@@ -67,8 +68,19 @@ struct cornerOwner {
 };
 typedef std::array<double, 3> pointByCoordinates;
 
+// The options only the patch layout reads (Mesh.CompoundLayout, Split,
+// NoiseSize, FeatureScale)
+struct layoutOptionsRecord {
+  bool layout = true, split = false;
+  double noiseSize = 0., featureScale = 0.;
+};
+
 // What the last patch layout (Geo/layout) hands to the later stages
 struct layoutRecord {
+  // The options it ran with (none before a layout), and whether a change
+  // of them since was named (Geo/parametrize/reparamParametrizeAgain.h)
+  std::optional<layoutOptionsRecord> options;
+  bool optionsChangeNamed = false;
   // The nodes where three cut edges or more meet (reparamBreakCurveAt),
   // until the faces get their geometry
   std::set<const MVertex *> junctions;

@@ -28,6 +28,7 @@
 #include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
+#include "reparamParametrizeAgain.h"
 #include "reparamState.h"
 #include "reparamTrianglePatch.h"
 #include "triangleAdjacency.h"
@@ -358,6 +359,7 @@ int reparamLayoutPatches(GModel *gm, std::vector<MLine *> &lines)
   // what an earlier layout left (its junctions, maps, cuts and creases)
   // and gm's crease curves go, also when Gmsh's split loop makes the patches
   beginLayoutRecords(gm);
+  lastLayout().options = currentLayoutOptions();
   const reparamOptions &options = getReparamOptions();
   if(options.parametrization == (int)compoundParametrization::gmsh ||
      !options.layout)

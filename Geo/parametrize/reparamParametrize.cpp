@@ -28,6 +28,7 @@
 #include "reparamLayout.h"
 #include "reparamOptions.h"
 #include "reparamParametrize.h"
+#include "reparamParametrizeAgain.h"
 #include "reparamReport.h"
 #include "reparamState.h"
 #include "reparamTrianglePatch.h"
@@ -206,7 +207,7 @@ namespace {
     }
     record.map = m.chosen().map;
     record.bijective = m.result.bijective;
-    record.nodes = p.nodes.size();
+    record.nodes = p.points.size();
     record.triangles = p.triangles.size();
     record.holes = m.holes;
     record.filledHoles = m.filledHoles;
@@ -278,32 +279,20 @@ namespace {
       for(int j = 0; j < 3; j++) tri[3 * t + j] = p.triangles[t][j];
     xyz = std::move(p.points);
     nodes = std::move(p.nodes);
-    uv.resize(nodes.size());
-    for(std::size_t i = 0; i < nodes.size(); i++)
+    uv.resize(xyz.size());
+    for(std::size_t i = 0; i < uv.size(); i++)
       uv[i] = SPoint2(map[2 * p.canonical[i]], map[2 * p.canonical[i] + 1]);
   }
 
-  // The map of `triangles` as `r` asks for it: 1 done (outputs written,
-  // `record` filled), -1 failed (outputs empty; why in r.failure and the
-  // log), 0 with Gmsh's own map. `result` gets parametrize's result.
-  // `built`: patchOfTriangles(triangles) if the caller has it (taken).
-  int mapTriangles(mapRequest &r, const std::vector<MTriangle *> &triangles,
-                   std::vector<MVertex *> &nodes, std::vector<SPoint2> &uv,
-                   std::vector<SPoint3> &xyz, std::vector<int> &tri,
-                   parametrizationRecord &record, parametrization &result,
-                   trianglePatch *built = nullptr)
+  // The map of patch `p` (of `numTriangles` triangles) as `r` asks for it:
+  // 1 done (outputs written, `record` filled), -1 failed (outputs empty; why
+  // in r.failure and the log). `result` gets parametrize's result.
+  int mapPatch(mapRequest &r, trianglePatch &p, std::size_t numTriangles,
+               double patchTime, std::vector<MVertex *> &nodes,
+               std::vector<SPoint2> &uv, std::vector<SPoint3> &xyz,
+               std::vector<int> &tri, parametrizationRecord &record,
+               parametrization &result)
   {
-    r.failure.clear();
-    const reparamOptions &options = getReparamOptions();
-    if(options.parametrization == (int)compoundParametrization::gmsh) return 0;
-    uv.clear();
-    xyz.clear();
-    tri.clear();
-    nodes.clear();
-    if(triangles.empty()) return -1;
-    const double t0 = TimeOfDay();
-    trianglePatch p = built ? std::move(*built) : patchOfTriangles(triangles);
-    const double patchTime = TimeOfDay() - t0;
     // Gmsh's callers read the outputs whatever the result (the patch check
     // of ClassifySurfaces indexes the (u, v) by the triangles): they stay
     // empty unless the map succeeds
@@ -315,7 +304,8 @@ namespace {
       Msg::Warning("Triangulation (%lu triangles) is not consistently "
                    "oriented: %lu triangles taken reversed for the "
                    "parametrization",
-                   triangles.size(), p.patch.numReorientedTriangles);
+                   numTriangles, p.patch.numReorientedTriangles);
+    const reparamOptions &options = getReparamOptions();
     parametrizeOptions o;
     o.map = options.parametrization;
     o.fillHoles = options.fillHoles;
@@ -329,13 +319,39 @@ namespace {
     o.keepInCache = r.caller == mapCaller::layout;
     result = parametrize(p.patch, o);
     if(r.quiet()) r.failed = failurePlace(p, result);
-    if(!r.quiet()) logHoles(result, triangles.size());
-    const std::string surface = surfaceName(p.nodes, triangles.size());
+    if(!r.quiet()) logHoles(result, numTriangles);
+    const std::string surface = p.nodes.empty() && r.face ?
+                                  "surface " + std::to_string(r.face->tag()) :
+                                  surfaceName(p.nodes, numTriangles);
     if(!logMaps(r, result, o.map, surface)) return -1;
     record = recordOf(p, result, patchTime);
     writeOutputs(p, result, nodes, uv, xyz, tri);
     if(!r.quiet()) logDone(record, p.patch.boundaryLoops.size());
     return 1;
+  }
+
+  // The same of `triangles`, 0 with Gmsh's own map. `built`:
+  // patchOfTriangles(triangles) if the caller has it (taken), made in
+  // `builtSeconds`.
+  int mapTriangles(mapRequest &r, const std::vector<MTriangle *> &triangles,
+                   std::vector<MVertex *> &nodes, std::vector<SPoint2> &uv,
+                   std::vector<SPoint3> &xyz, std::vector<int> &tri,
+                   parametrizationRecord &record, parametrization &result,
+                   trianglePatch *built = nullptr, double builtSeconds = 0.)
+  {
+    r.failure.clear();
+    if(getReparamOptions().parametrization ==
+       (int)compoundParametrization::gmsh)
+      return 0;
+    uv.clear();
+    xyz.clear();
+    tri.clear();
+    nodes.clear();
+    if(triangles.empty()) return -1;
+    const double t0 = TimeOfDay();
+    trianglePatch p = built ? std::move(*built) : patchOfTriangles(triangles);
+    return mapPatch(r, p, triangles.size(), builtSeconds + TimeOfDay() - t0,
+                    nodes, uv, xyz, tri, record, result);
   }
 
 } // namespace
@@ -382,6 +398,27 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
   }
   else if(done <= 0)
     why = r.failure;
+  return done;
+}
+
+int reparamMapFaceArrays(GFace *gf, const mapOptionsRecord &orders,
+                         std::vector<SPoint2> &uv,
+                         parametrizationRecord &record, std::string &why)
+{
+  mapRequest r;
+  r.caller = mapCaller::face;
+  r.face = gf;
+  const double t0 = TimeOfDay();
+  trianglePatch p = patchOfArrays(gf->stl_vertices_xyz, gf->stl_triangles,
+                                  orders.canonicalNodes, orders.triangleOrder);
+  std::vector<MVertex *> nodes;
+  std::vector<SPoint3> xyz;
+  std::vector<int> tri;
+  parametrization result;
+  const int done =
+    mapPatch(r, p, gf->stl_triangles.size() / 3, TimeOfDay() - t0, nodes, uv,
+             xyz, tri, record, result);
+  why = r.failure;
   return done;
 }
 
@@ -432,12 +469,26 @@ int reparamComputeFaceParametrization(GFace *gf,
   recordParametrization(gf, nullptr);
   parametrizationRecord record;
   parametrization result;
-  const int done = mapTriangles(r, triangles, nodes, stl_vertices_uv,
-                                stl_vertices_xyz, stl_triangles, record,
-                                result);
+  // the options and orders the map is computed with, for the face's map
+  // to be computed again when the options change (reparamParametrizeAgain)
+  mapOptionsRecord with = currentMapOptions();
+  std::optional<trianglePatch> p;
+  double patchTime = 0.;
+  if(with.map != (int)compoundParametrization::gmsh && !triangles.empty()) {
+    const double t0 = TimeOfDay();
+    p = patchOfTriangles(triangles);
+    with.canonicalNodes = p->canonical;
+    with.triangleOrder = p->triangleOrder;
+    patchTime = TimeOfDay() - t0;
+  }
+  const int done =
+    mapTriangles(r, triangles, nodes, stl_vertices_uv, stl_vertices_xyz,
+                 stl_triangles, record, result, p ? &*p : nullptr, patchTime);
   {
     std::unique_lock<std::mutex> lock = lockRecords();
-    faceRecordOf(gf).failure = r.failure;
+    faceRecord &f = faceRecordOf(gf);
+    f.failure = r.failure;
+    f.mappedWith = std::move(with);
   }
   if(done <= 0) return done;
   recordParametrization(gf, &record);

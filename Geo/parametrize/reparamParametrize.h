@@ -18,6 +18,9 @@ class MVertex;
 
 namespace reparam {
 
+struct mapOptionsRecord; // Geo/core/reparamFaceRecord.h
+struct parametrizationRecord;
+
 struct trianglePatch;
 
 // Drops the maps the patch layout kept for CreateGeometry (a new layout
@@ -55,6 +58,15 @@ int reparamTryParametrization(const std::vector<MTriangle *> &triangles,
 bool reparamHolesFillable(const std::vector<MTriangle *> &triangles);
 // The same of their patch (Geo/parametrize/reparamTrianglePatch.h)
 bool reparamHolesFillable(const trianglePatch &patch);
+
+// gf's map computed again with the options of now, from the arrays
+// CreateGeometry wrote (gf->stl_vertices_xyz, stl_triangles; its triangles
+// are gone once meshed), its nodes and triangles in the order of `orders`
+// (Geo/core/reparamFaceRecord.h): 1 with their (u, v) in `uv` and `record`
+// filled, logged as CreateGeometry logs it; -1 failed (why in `why`)
+int reparamMapFaceArrays(GFace *gf, const mapOptionsRecord &orders,
+                         std::vector<SPoint2> &uv,
+                         parametrizationRecord &record, std::string &why);
 
 // Why gf's last parametrization failed (for the safety net's warning)
 std::string reparamLastFailure(const GFace *gf);

@@ -28,13 +28,25 @@ struct trianglePatch {
   // canonical[i]: the patch's index of nodes[i] (nodes sorted by Gmsh's
   // number)
   std::vector<int> canonical;
+  // triangleOrder[k]: the triangle the patch has k-th (by Gmsh's number)
+  std::vector<int> triangleOrder;
   discretePatch patch; // on the canonical nodes, triangles by Gmsh number
   reparamError error; // makeDiscretePatch's verdict
 };
 
 trianglePatch patchOfTriangles(const std::vector<MTriangle *> &triangles);
 
-// Gmsh's node of the patch's node `patchNode`
+// The same patch made again from a face's arrays (the points and the
+// triangles' node indices that the parametrization wrote, in its nodes'
+// order) and the orders patchOfTriangles found: a face's map computed again
+// once its triangles are gone (Geo/parametrize/reparamParametrizeAgain.h).
+// Empty orders: the arrays' own. No Gmsh nodes (`nodes` stays empty).
+trianglePatch patchOfArrays(const std::vector<SPoint3> &points,
+                            const std::vector<int> &triangleNodes,
+                            std::vector<int> canonical,
+                            std::vector<int> triangleOrder);
+
+// Gmsh's node of the patch's node `patchNode` (null without Gmsh's nodes)
 MVertex *nodeOfPatch(const trianglePatch &p, int patchNode);
 
 } // namespace reparam
