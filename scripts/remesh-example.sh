@@ -18,7 +18,7 @@ for map in 0 3 6; do
   log=$out/log$map.txt
   json=$out/report$map.json
   start=$(date +%s%N)
-  if ! "$gmsh" "$geo" -2 -setnumber Parametrization $map \
+  if ! "$gmsh" "$geo" -2 -setnumber Mesh.CompoundParametrization $map \
        -string "Mesh.CompoundReportFile = \"$json\";" \
        -o "$out/remesh$map.msh" > "$log" 2>&1 || grep -q "^Error" "$log"; then
     cat "$log"; echo "gmsh failed with Mesh.CompoundParametrization = $map" >&2; exit 1

@@ -52,11 +52,12 @@ print("report ok: %d surfaces, %d triangles, %d quadrangles, kappa min %.3f"
          total["kappaMin"]))
 PY
 }
-"$gmsh" "$src/tutorials/t1_remesh_stl.geo" -2 -setnumber Parametrization 5 \
+"$gmsh" "$src/tutorials/t1_remesh_stl.geo" -2 \
+  -setnumber Mesh.CompoundParametrization 5 \
   -string "Mesh.CompoundReportFile = \"$work/t1.json\";" \
   -o "$work/t1.msh" > "$work/t1.log" 2>&1
 check "$work/t1.json" "$work/t1.log" "spectral conformal"
 "$gmsh" "$src/tutorials/t2_compound.geo" -2 \
-  -string "Mesh.RecombineAll = 1; Mesh.CompoundReportFile = \"$work/t2.json\";" \
+  -setnumber Mesh.CompoundParametrization 3 -string "Mesh.RecombineAll = 1; Mesh.CompoundReportFile = \"$work/t2.json\";" \
   -o "$work/t2.msh" > "$work/t2.log" 2>&1
 check "$work/t2.json" "$work/t2.log" "mean value"

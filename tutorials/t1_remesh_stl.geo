@@ -3,17 +3,27 @@
 // dome.stl is a bumpy dome with two holes, triangulated with long slivers
 // (kappa min < 0.1), like a raw segmentation. We classify it into discrete
 // surfaces, parametrize each one and remesh it with Gmsh's planar mesher in
-// the parametric plane:
+// the parametric plane. In batch, Reparam's options on the command line:
 //
-//   gmsh t1_remesh_stl.geo -2                  (mean value map, the default)
-//   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 0   (Gmsh's own)
-//   gmsh t1_remesh_stl.geo -2 -setnumber Parametrization 5   (spectral)
-//   gmsh t1_remesh_stl.geo -2 -setnumber FillHoles 0  (holes left free)
-//   gmsh t1_remesh_stl.geo -2 -setnumber Optimize 0   (planar mesh as is)
+//   gmsh t1_remesh_stl.geo -2              (automatic map, the default)
+//   gmsh t1_remesh_stl.geo -2 -setnumber Mesh.CompoundParametrization 0
+//                                          (Gmsh's own map; 3: mean value,
+//                                          5: spectral conformal...)
+//   gmsh t1_remesh_stl.geo -2 -setnumber Mesh.CompoundFillHoles 0
+//                                          (holes left free)
+//   gmsh t1_remesh_stl.geo -2 -setnumber Mesh.CompoundOptimize 0
+//                                          (planar mesh as is)
+//
+// In the GUI: gmsh t1_remesh_stl.geo, then Tools > Options > Mesh >
+// Compound to choose the map, the hole filling and the optimization, and
+// Mesh > 2D. A map chosen after the file is loaded is the one the next mesh
+// uses (the surfaces are parametrized again); the mesh size is the
+// "Reparam/Mesh size" parameter on the left.
 //
 // Maps 1 to 3 put the outer boundary on the unit circle; maps 4 and 5 leave
-// it free (conformal). The two holes are filled on their mean plane before
-// mapping (Mesh.CompoundFillHoles) and stay holes in the new mesh.
+// it free (conformal); the automatic map (6) takes the first one-to-one map
+// of a chain. The two holes are filled on their mean plane before mapping
+// (Mesh.CompoundFillHoles) and stay holes in the new mesh.
 //
 // After the planar mesher, the new mesh is optimized on the input
 // (Mesh.CompoundOptimize: input nodes it cuts off inserted, long edges split
@@ -25,26 +35,10 @@
 // (kappa min before and after).
 
 DefineConstant[
-  Parametrization = {3, Choices{0 = "Gmsh built-in", 1 = "FE harmonic",
-                                2 = "Barycentric", 3 = "Mean value",
-                                4 = "FE conformal", 5 = "Spectral conformal",
-                                6 = "Automatic"},
-                     Name "Reparam/Parametrization"}
-  FillHoles = {1, Choices{0, 1}, Name "Reparam/Fill holes"}
-  Optimize = {2, Choices{0 = "None", 1 = "On the input, no collapse",
-                         2 = "On the input, short edges collapsed"},
-              Name "Reparam/Optimize"}
-  Size = {0.05, Min 0.005, Max 0.5, Step 0.005,
-              Name "Reparam/Mesh size"}
+  Size = {0.05, Min 0.005, Max 0.5, Step 0.005, Name "Reparam/Mesh size"}
 ];
 
 Merge "dome.stl";
-
-// Mesh.CompoundParametrization must be set before CreateGeometry, which
-// computes the parametrizations
-Mesh.CompoundParametrization = Parametrization;
-Mesh.CompoundFillHoles = FillHoles;
-Mesh.CompoundOptimize = Optimize;
 
 // Split the triangulation where the angle between triangles exceeds 40
 // degrees, keep the boundary, and make every patch parametrizable (1)

@@ -18,7 +18,8 @@ gmsh.option.setNumber("General.Terminal", 0)
 names = {0: "Gmsh built-in", 3: "Reparam mean value"}
 for parametrization in (0, 3):
     gmsh.clear()
-    # set before createGeometry, which computes the parametrizations
+    # (set after createGeometry, it acts too: the surfaces are parametrized
+    # again at the next generate)
     gmsh.option.setNumber("Mesh.CompoundParametrization", parametrization)
     gmsh.merge(os.path.join(here, "dome.stl"))
     gmsh.model.mesh.classifySurfaces(40 * math.pi / 180, True, True, math.pi)

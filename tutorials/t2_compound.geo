@@ -8,10 +8,15 @@
 //
 //   gmsh t2_compound.geo -2
 //   gmsh t2_compound.geo -2 -setnumber UseCompound 0     (patch by patch)
+//   gmsh t2_compound.geo -2 -setnumber Mesh.CompoundParametrization 3
+//                                                  (mean value map)
+//
+// In the GUI: gmsh t2_compound.geo, the map in Tools > Options > Mesh >
+// Compound, the compound on or off with "Reparam/Compound" on the left,
+// then Mesh > 2D.
 
 DefineConstant[
   UseCompound = {1, Choices{0, 1}, Name "Reparam/Compound"}
-  Parametrization = {3, Name "Reparam/Parametrization"}
 ];
 
 lc = 0.1;
@@ -34,7 +39,6 @@ For i In {0 : 2}
   Surface(1 + i) = {1 + i}; // bilinear (Coons) patches
 EndFor
 
-Mesh.CompoundParametrization = Parametrization;
 If(UseCompound)
   Compound Curve{1, 2, 3};
   Compound Curve{4, 5, 6};

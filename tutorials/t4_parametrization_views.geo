@@ -8,21 +8,13 @@
 // triangle, tau, distance to the input) and adds kappa and its histogram.
 //
 //   gmsh t4_parametrization_views.geo -                (batch: writes .pos)
-//   gmsh t4_parametrization_views.geo -setnumber Parametrization 3 -
+//   gmsh t4_parametrization_views.geo -setnumber Mesh.CompoundParametrization 3 \
+//        -                                         (the mean value map's)
 //   gmsh t4_parametrization_views.geo                  (GUI: look at them)
 //
 // In batch the views are written to t4_<name>.pos, next to this file.
 
-DefineConstant[
-  Parametrization = {6, Choices{0 = "Gmsh built-in", 1 = "FE harmonic",
-                                2 = "Barycentric", 3 = "Mean value",
-                                4 = "FE conformal", 5 = "Spectral conformal",
-                                6 = "Automatic"},
-                     Name "Reparam/Parametrization"}
-];
-
 Merge "dome.stl";
-Mesh.CompoundParametrization = Parametrization;
 ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};
 CreateGeometry;
 

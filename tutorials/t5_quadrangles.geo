@@ -6,8 +6,13 @@
 // Blossom pairs them into near-square quadrangles:
 //
 //   gmsh t5_quadrangles.geo -2
-//   gmsh t5_quadrangles.geo -2 -setnumber Parametrization 0  (Gmsh's own)
-//   gmsh t5_quadrangles.geo -2 -setnumber Optimize 0  (as Blossom left them)
+//   gmsh t5_quadrangles.geo -2 -setnumber Mesh.CompoundParametrization 0
+//                                         (Gmsh's own map)
+//   gmsh t5_quadrangles.geo -2 -setnumber Mesh.CompoundOptimize 0
+//                                         (as Blossom left them)
+//
+// In the GUI: gmsh t5_quadrangles.geo, the map and the optimization in
+// Tools > Options > Mesh > Compound, then Mesh > 2D.
 //
 // On a surface Reparam parametrized, Gmsh's recombination smooths the
 // quadrangles in the parametric plane and removes their diamonds, as on a
@@ -25,18 +30,10 @@
 // before and after the optimization.
 
 DefineConstant[
-  Parametrization = {6, Choices{0 = "Gmsh built-in", 3 = "Mean value",
-                                4 = "FE conformal", 5 = "Spectral conformal",
-                                6 = "Automatic"},
-                     Name "Reparam/Parametrization"}
-  Optimize = {2, Choices{0 = "None", 2 = "On the input"},
-              Name "Reparam/Optimize"}
   Size = {0.05, Min 0.01, Max 0.5, Step 0.01, Name "Reparam/Mesh size"}
 ];
 
 Merge "dome.stl";
-Mesh.CompoundParametrization = Parametrization;
-Mesh.CompoundOptimize = Optimize;
 ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};
 CreateGeometry;
 

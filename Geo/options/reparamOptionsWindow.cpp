@@ -59,19 +59,21 @@ void reparamAddCompoundTab(optionWindow *w, int x, int y, int width, int height,
   auto row = [&](int i) { return y + WB + (i - 1) * BH; };
   const int left = x + WB;
 
+  // short labels that fit the choice at Gmsh's default window size; the
+  // long names in the tooltips
   static Fl_Menu_Item menu_compound_map[] = {
     {"Gmsh built-in", 0, nullptr, nullptr},
-    {"Finite element harmonic", 0, nullptr, nullptr},
-    {"Barycentric (Tutte)", 0, nullptr, nullptr},
+    {"FE harmonic", 0, nullptr, nullptr},
+    {"Barycentric", 0, nullptr, nullptr},
     {"Mean value", 0, nullptr, nullptr},
-    {"Finite element conformal (LSCM)", 0, nullptr, nullptr},
-    {"Spectral conformal", 0, nullptr, nullptr},
+    {"FE conformal", 0, nullptr, nullptr},
+    {"Spectral", 0, nullptr, nullptr},
     {"Automatic", 0, nullptr, nullptr},
     {nullptr}};
   static Fl_Menu_Item menu_compound_optimize[] = {
     {"None", 0, nullptr, nullptr},
-    {"On the input, no collapse", 0, nullptr, nullptr},
-    {"On the input", 0, nullptr, nullptr},
+    {"No collapses", 0, nullptr, nullptr},
+    {"Full", 0, nullptr, nullptr},
     {nullptr}};
   auto choice = [&](int i, int r, const char *label, Fl_Menu_Item *menu,
                     const char *tip) {
@@ -83,17 +85,25 @@ void reparamAddCompoundTab(optionWindow *w, int x, int y, int width, int height,
     c->callback(changed);
   };
   choice(40, 1, "Parametrization", menu_compound_map,
-         "Mesh.CompoundParametrization (set before CreateGeometry or "
-         "Compound Surface)");
+         "Mesh.CompoundParametrization: 0 Gmsh's built-in map, 1 finite "
+         "element harmonic, 2 barycentric (Tutte), 3 mean value, 4 finite "
+         "element conformal (LSCM), 5 spectral conformal, 6 automatic (the "
+         "first one-to-one map of a chain). A change after the geometry is "
+         "created acts at the next mesh: the surfaces are parametrized again");
   choice(41, 2, "Optimization", menu_compound_optimize,
-         "Mesh.CompoundOptimize");
+         "Mesh.CompoundOptimize: the new mesh optimized on the input; 0 none, "
+         "1 without collapses of short edges, 2 with them");
 
   const char *buttons[] = {"Repair flipped parametric triangles",
                            "Fill holes before mapping",
                            "Split the patches no map flattens well",
                            "Report quality and distance after meshing"};
-  const char *tips[] = {"Mesh.CompoundRepair", "Mesh.CompoundFillHoles",
-                        "Mesh.CompoundSplit", "Mesh.CompoundReport"};
+  const char *tips[] = {
+    "Mesh.CompoundRepair (acts at the next mesh)",
+    "Mesh.CompoundFillHoles (acts at the next mesh)",
+    "Mesh.CompoundSplit (read by ClassifySurfaces, with Mesh.CompoundLayout "
+    "= 0: reload the file after a change)",
+    "Mesh.CompoundReport"};
   for(int i = 0; i < 4; i++) {
     Fl_Check_Button *b = w->mesh.butt[40 + i] =
       new Fl_Check_Button(left, row(3 + i), bw, BH, buttons[i]);
