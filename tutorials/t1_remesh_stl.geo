@@ -34,8 +34,11 @@
 // meshed surface (triangles, kappa min and mean) and one on the optimization
 // (kappa min before and after).
 
+// The mesh size, from a list (-setnumber Size takes any value)
 DefineConstant[
-  Size = {0.05, Min 0.005, Max 0.5, Step 0.005, Name "Reparam/Mesh size"}
+  Size = {0.05, Choices{0.1 = "0.1", 0.05 = "0.05", 0.025 = "0.025",
+                        0.0125 = "0.0125"},
+          Name "Reparam/Mesh size"}
 ];
 
 Merge "dome.stl";

@@ -30,7 +30,9 @@
 // before and after the optimization.
 
 DefineConstant[
-  Size = {0.05, Min 0.01, Max 0.5, Step 0.01, Name "Reparam/Mesh size"}
+  // (-setnumber Size takes any value)
+  Size = {0.05, Choices{0.1 = "0.1", 0.05 = "0.05", 0.025 = "0.025"},
+          Name "Reparam/Mesh size"}
 ];
 
 Merge "dome.stl";

@@ -19,15 +19,15 @@
 // the bounds; the total line the elements and the distance to the input.
 
 DefineConstant[
-  Anisotropic = {1, Choices{0 = "Isotropic (Frontal-Delaunay)",
-                            1 = "Anisotropic (BAMG)"},
-                 Name "Reparam/Anisotropic"}
-  ElementsPerCircle = {20, Min 4, Max 60, Step 1,
-                       Name "Reparam/Elements per circle of curvature"}
+  // 0: Frontal-Delaunay, isotropic; 1: BAMG, anisotropic
+  Anisotropic = {1, Choices{0, 1}, Name "Reparam/Anisotropic (BAMG)"}
+  // (-setnumber ElementsPerCircle takes any value)
+  ElementsPerCircle = {20, Choices{10 = "10", 20 = "20", 40 = "40"},
+                       Name "Reparam/Per circle",
+                       Help "Elements per circle of curvature"}
 ];
 
 Merge "dome.stl";
-Mesh.CompoundParametrization = 6;
 ClassifySurfaces{40 * Pi / 180, 1, 1, 180 * Pi / 180};
 CreateGeometry;
 

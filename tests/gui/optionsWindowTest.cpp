@@ -1,15 +1,22 @@
 // Reparam - the Compound tab of Gmsh's options window (Tools > Options >
 // Mesh, patches/0017), driven as a user would: the map chosen in its
 // widget, not by the option string, reaches the mesher (the report names
-// it), and the window looks like the stored reference image (within a
-// tolerance: fonts render alike on the same Debian, not byte for byte).
+// it), also when chosen after tutorial 1 is loaded and meshed, and a reload
+// keeps it, and for tutorial 2's compound; every label fits its widget; the
+// window and the open list of maps look like the stored reference images
+// (within a tolerance: fonts render alike on the same Debian, not byte for
+// byte).
 //
-//   reparamGuiTest TUTORIALS_DIR REFERENCE.png [SCREENSHOT.ppm]
+//   reparamGuiTest TUTORIALS_DIR REFERENCE.png LIST_REFERENCE.png
+//                  [SCREENSHOT.ppm LIST_SCREENSHOT.ppm]
 //
 // Run under a display (CTest: xvfb-run). Exit code 0: passed; 1: failed
 // (what and why printed).
 
 #include <FL/Fl.H>
+#include <FL/Fl_Check_Button.H>
+#include <FL/Fl_Choice.H>
+#include <FL/Fl_Menu_Window.H>
 #include <FL/Fl_PNG_Image.H>
 #include <FL/Fl_Tabs.H>
 #include <FL/fl_draw.H>
@@ -24,7 +31,6 @@
 #include "gmsh.h"
 #include "optionWindow.h"
 
-using namespace reparam;
 
 namespace {
 
@@ -105,12 +111,103 @@ namespace {
     return 1;
   }
 
+  // Whether every label of the Compound tab's choices and buttons is drawn
+  // whole (Fl_Choice: its text left of the arrow box, FLTK 1.3's draw)
+  bool labelsFit(optionWindow *o, std::string &cut)
+  {
+    for(int i : {40, 41}) {
+      Fl_Choice *c = o->mesh.choice[i];
+      fl_font(c->textfont(), c->textsize());
+      const int dx = Fl::box_dx(c->box()),
+                h = c->h() - 2 * Fl::box_dy(c->box());
+      const int room = c->w() - 2 * dx - std::min(h, 20) - 4;
+      for(int k = 0; k < c->size() - 1; k++) {
+        const char *label = c->menu()[k].label();
+        if(label && fl_width(label) > room) cut = label;
+      }
+    }
+    for(int i = 40; i < 44; i++) {
+      Fl_Check_Button *b = o->mesh.butt[i];
+      fl_font(b->labelfont(), b->labelsize());
+      // the box, then the label, inside the button
+      if(fl_width(b->label()) + b->h() > b->w()) cut = b->label();
+    }
+    return cut.empty();
+  }
+
+  // The list of maps as the choice opens it: a timer takes its picture
+  // and closes it (Escape), as the menu runs its own event loop
+  image openListShot;
+  void shootOpenList(void *)
+  {
+    Fl_Window *menu = Fl::first_window();
+    if(menu && menu->as_window() && dynamic_cast<Fl_Menu_Window *>(menu))
+      openListShot = screenshot(menu);
+    Fl::e_keysym = FL_Escape;
+    Fl::handle(FL_KEYBOARD, Fl::first_window());
+  }
+
+  bool looksLike(const image &shot, const std::string &reference,
+                 const std::string &what, std::string &why)
+  {
+    image expected;
+    if(!readPng(reference, expected)) {
+      why = "no reference image " + reference;
+      return false;
+    }
+    double mean = 0., share = 0.;
+    if(!compare(shot, expected, mean, share)) {
+      why = what + " is " + std::to_string(shot.width) + " x " +
+            std::to_string(shot.height) + ", the reference " +
+            std::to_string(expected.width) + " x " +
+            std::to_string(expected.height);
+      return false;
+    }
+    std::cout << what << ": mean difference " << mean << " / 255, "
+              << 100. * share << " % of the pixels far from the reference"
+              << std::endl;
+    // 0 and 0 % on Debian bookworm's Xvfb; another label of the choice
+    // differs in 0.26 % of the window's pixels
+    if(mean > 1. || share > 0.001) {
+      why = what + " differs from the reference image";
+      return false;
+    }
+    return true;
+  }
+
+  // Mesh 2 of the current model: the log, and whether a line names the map
+  // `name` in the report and whether one says surfaces were parametrized
+  // again; an Error line fails
+  struct meshed {
+    bool named = false, again = false;
+    std::string error;
+  };
+  meshed mesh2(const std::string &name)
+  {
+    gmsh::logger::start();
+    gmsh::model::mesh::generate(2);
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    gmsh::logger::stop();
+    meshed m;
+    for(const std::string &l : log) {
+      m.named = m.named || std::regex_search(
+                             l, std::regex("Reparam: [0-9]+ +" + name + " "));
+      m.again = m.again || l.find("parametrized again") != std::string::npos;
+      if(l.find("Error") != std::string::npos) m.error = l;
+    }
+    return m;
+  }
+
 } // namespace
 
 int main(int argc, char **argv)
 {
-  if(argc < 3) return fail("usage: reparamGuiTest TUTORIALS_DIR REFERENCE.png");
-  const std::string tutorials = argv[1], reference = argv[2];
+  if(argc < 4)
+    return fail("usage: reparamGuiTest TUTORIALS_DIR REFERENCE.png "
+                "LIST_REFERENCE.png [SCREENSHOT.ppm LIST_SCREENSHOT.ppm]");
+  const std::string tutorials = argv[1], reference = argv[2],
+                    listReference = argv[3];
   gmsh::initialize();
   gmsh::fltk::initialize();
   optionWindow *o = FlGui::instance()->options;
@@ -121,47 +218,62 @@ int main(int argc, char **argv)
   if(option("Mesh.CompoundParametrization") != 6 ||
      o->mesh.choice[40]->value() != 6)
     return fail("the widget does not show the default map (automatic)");
+  std::string cut;
+  if(!labelsFit(o, cut)) return fail("the label \"" + cut + "\" is cut");
   // the spectral conformal map, chosen in the widget
   o->mesh.choice[40]->value(5);
   o->mesh.choice[40]->do_callback();
   if(option("Mesh.CompoundParametrization") != 5)
     return fail("the widget did not set Mesh.CompoundParametrization");
 
+  std::string why;
   const image shot = screenshot(o->win);
-  if(argc > 3) writePpm(argv[3], shot);
-  image expected;
-  if(!readPng(reference, expected))
-    return fail("no reference image " + reference);
-  double mean = 0., share = 0.;
-  if(!compare(shot, expected, mean, share))
-    return fail("the window is " + std::to_string(shot.width) + " x " +
-                std::to_string(shot.height) + ", the reference " +
-                std::to_string(expected.width) + " x " +
-                std::to_string(expected.height));
-  std::cout << "screenshot: mean difference " << mean << " / 255, "
-            << 100. * share << " % of the pixels far from the reference"
-            << std::endl;
-  // 0 and 0 % on Debian bookworm's Xvfb; the label of another map in the
-  // choice (finite element conformal) differs in 0.26 % of the pixels
-  if(mean > 1. || share > 0.001)
-    return fail("the window differs from the reference image");
+  if(argc > 4) writePpm(argv[4], shot);
+  if(!looksLike(shot, reference, "the window", why)) return fail(why);
+  // the list of maps, open
+  Fl_Choice *maps = o->mesh.choice[40];
+  Fl::add_timeout(0.5, shootOpenList);
+  const Fl_Menu_Item *picked =
+    maps->menu()->pulldown(maps->x() + o->win->x(), maps->y() + o->win->y(),
+                           maps->w(), maps->h(), maps->mvalue());
+  if(picked) return fail("the open list picked a map by itself");
+  if(openListShot.rgb.empty()) return fail("no picture of the open list");
+  if(argc > 5) writePpm(argv[5], openListShot);
+  if(!looksLike(openListShot, listReference, "the open list", why))
+    return fail(why);
 
-  // the recipe on the tutorial's STL: the report names the map
-  gmsh::logger::start();
-  gmsh::merge(tutorials + "/dome.stl");
-  gmsh::model::mesh::classifySurfaces(40. * M_PI / 180., true, true, M_PI);
-  gmsh::model::mesh::createGeometry();
-  gmsh::model::mesh::generate(2);
-  std::vector<std::string> log;
-  gmsh::logger::get(log);
-  bool spectral = false;
-  for(const std::string &l : log) {
-    spectral = spectral ||
-               std::regex_search(l, std::regex("Reparam: [0-9]+ +spectral "));
-    if(l.find("Error") != std::string::npos) return fail("log: " + l);
-  }
-  if(!spectral) return fail("the report does not name the spectral map");
-  std::cout << "map from the options window: spectral conformal, in the report"
+  // tutorial 1 as a user opens it: the map of the window (spectral)
+  gmsh::open(tutorials + "/t1_remesh_stl.geo");
+  meshed m = mesh2("spectral");
+  if(!m.error.empty()) return fail("log: " + m.error);
+  if(!m.named) return fail("the report does not name the spectral map");
+  // another map chosen in the window once the file is loaded and meshed:
+  // the next Mesh > 2D parametrizes again and meshes with it
+  maps->value(4);
+  maps->do_callback();
+  m = mesh2("LSCM");
+  if(!m.error.empty()) return fail("log: " + m.error);
+  if(!m.again || !m.named)
+    return fail("the map chosen after loading is not the one meshed");
+  // File > Reload keeps the window's choice (the tutorial leaves the map to
+  // the option)
+  gmsh::open(tutorials + "/t1_remesh_stl.geo");
+  if(option("Mesh.CompoundParametrization") != 4 || maps->value() != 4)
+    return fail("reloading the tutorial changed the map of the window");
+  m = mesh2("LSCM");
+  if(!m.named || m.again)
+    return fail("the reloaded tutorial is not meshed with the window's map");
+  // tutorial 2's Compound Surface, parametrized when meshed: the map
+  // chosen in the window after loading
+  gmsh::open(tutorials + "/t2_compound.geo");
+  maps->value(3);
+  maps->do_callback();
+  m = mesh2("MV");
+  if(!m.error.empty()) return fail("log: " + m.error);
+  if(!m.named) return fail("tutorial 2 is not meshed with the window's map");
+  std::cout << "maps from the options window: spectral, then finite element "
+               "conformal chosen after loading tutorial 1, in the report; "
+               "kept on reload; mean value for tutorial 2's compound"
             << std::endl;
   gmsh::finalize();
   return 0;
